@@ -1,0 +1,31 @@
+// Message <-> core struct conversions for the risk node, with the input checks that keep bad data
+// out of the engine. No ROS node handle here: unit-testable without a master.
+#pragma once
+
+#include <string>
+
+#include <asv_core/risk_assessment.h>
+#include <asv_msgs/Target.h>
+#include <asv_msgs/TargetRisk.h>
+#include <nav_msgs/Odometry.h>
+
+namespace asv_risk {
+
+// Why an input was rejected; kCount is the number of reasons (for counters).
+enum class Reject { None = 0, NonFinite, Impossible, EmptyId, Duplicate, Stale, Future, Frame, kCount };
+const char* toString(Reject r);
+
+// Largest speed over ground taken as real [m/s]: 102.2 kn is the largest AIS can report.
+constexpr double kMaxSpeed = 102.2 * asv::kMpsPerKnot;
+
+// Checks and converts a target. Position is taken as already in the working frame.
+Reject targetToShipState(const asv_msgs::Target& msg, asv::ShipState& out);
+
+// Converts an odometry message (pose in the working frame, twist in child_frame_id as REP 105 says)
+// into the own ship's state over ground.
+Reject odometryToShipState(const nav_msgs::Odometry& msg, const std::string& name, asv::ShipState& out);
+
+// Fills a TargetRisk message from the core result.
+asv_msgs::TargetRisk toMsg(const asv::TargetRisk& r, uint32_t mmsi);
+
+}  // namespace asv_risk

@@ -1,0 +1,122 @@
+#include "asv_risk/conversions.h"
+
+#include <cmath>
+
+#include <tf2/utils.h>
+
+namespace asv_risk {
+
+const char* toString(Reject r) {
+  switch (r) {
+    case Reject::None:
+      return "accepted";
+    case Reject::NonFinite:
+      return "non_finite";
+    case Reject::Impossible:
+      return "impossible_value";
+    case Reject::EmptyId:
+      return "empty_id";
+    case Reject::Duplicate:
+      return "duplicate_id";
+    case Reject::Stale:
+      return "stale";
+    case Reject::Future:
+      return "future_stamp";
+    case Reject::Frame:
+      return "unknown_frame";
+    case Reject::kCount:
+      break;
+  }
+  return "unknown";
+}
+
+Reject targetToShipState(const asv_msgs::Target& msg, asv::ShipState& out) {
+  if (msg.id.empty())
+    return Reject::EmptyId;
+  if (!asv::allFinite({msg.position.x, msg.position.y, msg.course_over_ground, msg.speed_over_ground}))
+    return Reject::NonFinite;
+  if (msg.has_heading && !std::isfinite(msg.heading))
+    return Reject::NonFinite;
+  if (!std::isfinite(msg.length))
+    return Reject::NonFinite;
+  if (msg.speed_over_ground < 0.0 || msg.speed_over_ground > kMaxSpeed)
+    return Reject::Impossible;
+  out.id = msg.id;
+  out.position = {msg.position.x, msg.position.y};
+  out.course = asv::wrapTwoPi(msg.course_over_ground);
+  out.speed = msg.speed_over_ground;
+  // COLREGs bearings are taken from the heading; without one, the course over ground stands in.
+  out.heading = msg.has_heading ? asv::wrapTwoPi(msg.heading) : out.course;
+  out.length = msg.length > 0.0f ? msg.length : 0.0;
+  return Reject::None;
+}
+
+Reject odometryToShipState(const nav_msgs::Odometry& msg, const std::string& name, asv::ShipState& out) {
+  const auto& p = msg.pose.pose.position;
+  const auto& q = msg.pose.pose.orientation;
+  const auto& v = msg.twist.twist.linear;
+  if (!asv::allFinite({p.x, p.y, q.x, q.y, q.z, q.w, v.x, v.y}))
+    return Reject::NonFinite;
+  const double qn = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
+  if (qn < 0.5 || qn > 1.5)
+    return Reject::Impossible;  // not a rotation
+  const double yaw = tf2::getYaw(q);
+  // Twist is expressed in the child (body) frame: rotate it into the working frame.
+  const double ve = v.x * std::cos(yaw) - v.y * std::sin(yaw);
+  const double vn = v.x * std::sin(yaw) + v.y * std::cos(yaw);
+  const double speed = std::hypot(ve, vn);
+  if (speed > kMaxSpeed)
+    return Reject::Impossible;
+  out.id = name;
+  out.position = {p.x, p.y};
+  out.heading = asv::yawToCourse(yaw);
+  out.speed = speed;
+  // Below 1 cm/s the course over ground is noise; the heading is the better course.
+  out.course = speed > 0.01 ? asv::courseOf({ve, vn}) : out.heading;
+  return Reject::None;
+}
+
+asv_msgs::TargetRisk toMsg(const asv::TargetRisk& r, uint32_t mmsi) {
+  asv_msgs::TargetRisk m;
+  m.target_id = r.id;
+  m.mmsi = mmsi;
+  m.range = r.range;
+  m.bearing = r.true_bearing;
+  m.relative_bearing = r.geometry.relative_bearing;
+  m.aspect = r.geometry.aspect;
+  m.tcpa = r.cpa.tcpa;
+  m.dcpa = r.cpa.dcpa;
+  m.own_cpa_position.x = r.cpa.own_at_cpa.x();
+  m.own_cpa_position.y = r.cpa.own_at_cpa.y();
+  m.target_cpa_position.x = r.cpa.target_at_cpa.x();
+  m.target_cpa_position.y = r.cpa.target_at_cpa.y();
+  m.cri = r.cri.cri;
+  m.safe_distance_d1 = r.cri.d1;
+  m.safe_distance_d2 = r.cri.d2;
+  m.risk_level = static_cast<uint8_t>(r.compliance.risk);
+  m.encounter = static_cast<uint8_t>(r.geometry.encounter);
+  m.own_role = static_cast<uint8_t>(r.geometry.role);
+  m.compliant = r.compliance.compliant;
+  m.decision = static_cast<uint8_t>(r.compliance.decision);
+  m.applicable_rule = static_cast<uint8_t>(r.rule);
+  return m;
+}
+
+}  // namespace asv_risk
+
+// The message constants mirror the core enumerations: catch any drift at compile time.
+namespace {
+using TR = asv_msgs::TargetRisk;
+static_assert(TR::RISK_URGENT == static_cast<uint8_t>(asv::RiskLevel::Urgent), "risk enum drift");
+static_assert(TR::RISK_COLLISION == static_cast<uint8_t>(asv::RiskLevel::Collision), "risk enum drift");
+static_assert(TR::ENCOUNTER_HEAD_ON == static_cast<uint8_t>(asv::Encounter::HeadOn), "encounter drift");
+static_assert(TR::ENCOUNTER_CROSSING_GIVE_WAY == static_cast<uint8_t>(asv::Encounter::CrossingGiveWay), "");
+static_assert(TR::ENCOUNTER_CROSSING_STAND_ON == static_cast<uint8_t>(asv::Encounter::CrossingStandOn), "");
+static_assert(TR::ENCOUNTER_OVERTAKING == static_cast<uint8_t>(asv::Encounter::Overtaking), "");
+static_assert(TR::ENCOUNTER_BEING_OVERTAKEN == static_cast<uint8_t>(asv::Encounter::BeingOvertaken), "");
+static_assert(TR::ROLE_GIVE_WAY == static_cast<uint8_t>(asv::OwnRole::GiveWay), "role drift");
+static_assert(TR::ROLE_STAND_ON == static_cast<uint8_t>(asv::OwnRole::StandOn), "role drift");
+static_assert(TR::ROLE_BOTH_GIVE_WAY == static_cast<uint8_t>(asv::OwnRole::BothGiveWay), "role drift");
+static_assert(TR::DECISION_RULE_2 == static_cast<uint8_t>(asv::RuleDecision::Rule2), "decision drift");
+static_assert(TR::DECISION_RULE_APPLIES == static_cast<uint8_t>(asv::RuleDecision::RuleApplies), "");
+}  // namespace

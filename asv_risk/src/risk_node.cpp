@@ -1,0 +1,338 @@
+#include "asv_risk/risk_node.h"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+#include <unordered_set>
+
+#include <tf2/utils.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
+namespace asv_risk {
+
+namespace {
+
+// Every private parameter the node understands; anything else under ~ is a typo and an error.
+const std::set<std::string> kKnownParams = {"own_ship",
+                                            "frame_id",
+                                            "stale_after",
+                                            "future_tolerance",
+                                            "odom_timeout",
+                                            "publish_markers",
+                                            "min_rate",
+                                            "max_rate",
+                                            "risk_level/t_max",
+                                            "risk_level/d_min",
+                                            "risk_level/t_safe",
+                                            "risk_level/d_safe",
+                                            "cri/c_dcpa",
+                                            "cri/c_tcpa",
+                                            "cri/c_b",
+                                            "cri/c_d",
+                                            "cri/c_k",
+                                            "cri/dlma",
+                                            "cri/attention_range",
+                                            "cri/speed_ratio_w",
+                                            "cri/arena_cb",
+                                            "cri/peak_bearing_deg",
+                                            "cri/zero_when_diverging",
+                                            "cri/domain_unit",
+                                            "cri/turn90_time",
+                                            "cri/advance",
+                                            "colregs/head_on_half_angle_deg",
+                                            "colregs/stern_sector_start_deg",
+                                            "colregs/max_range"};
+
+void checkUnknownParams(const ros::NodeHandle& pnh) {
+  std::vector<std::string> names;
+  if (!ros::param::getParamNames(names))
+    return;
+  const std::string prefix = pnh.getNamespace() + "/";
+  for (const std::string& n : names) {
+    if (n.compare(0, prefix.size(), prefix) != 0)
+      continue;
+    const std::string key = n.substr(prefix.size());
+    if (!kKnownParams.count(key))
+      throw std::invalid_argument("unknown parameter '" + n +
+                                  "' (typo? see config/risk_node.yaml for the keys)");
+  }
+}
+
+template <typename T>
+void get(const ros::NodeHandle& pnh, const std::string& key, T& value) {
+  pnh.param(key, value, value);
+}
+
+float riskColour(uint8_t level, int channel) {
+  // green (none), amber (collision risk), red (urgent)
+  static const float rgb[3][3] = {{0.1f, 0.8f, 0.2f}, {1.0f, 0.65f, 0.0f}, {0.9f, 0.1f, 0.1f}};
+  return rgb[std::min<uint8_t>(level, 2)][channel];
+}
+
+}  // namespace
+
+RiskNodeParams loadParams(const ros::NodeHandle& pnh) {
+  checkUnknownParams(pnh);
+  RiskNodeParams p;
+  get(pnh, "own_ship", p.own_ship);
+  get(pnh, "frame_id", p.frame_id);
+  get(pnh, "stale_after", p.stale_after);
+  get(pnh, "future_tolerance", p.future_tolerance);
+  get(pnh, "odom_timeout", p.odom_timeout);
+  get(pnh, "publish_markers", p.publish_markers);
+  get(pnh, "min_rate", p.min_rate);
+  get(pnh, "max_rate", p.max_rate);
+  auto& l = p.risk.level;
+  get(pnh, "risk_level/t_max", l.t_max_s);
+  get(pnh, "risk_level/d_min", l.d_min_m);
+  get(pnh, "risk_level/t_safe", l.t_safe_s);
+  get(pnh, "risk_level/d_safe", l.d_safe_m);
+  auto& c = p.risk.cri;
+  get(pnh, "cri/c_dcpa", c.c_dcpa);
+  get(pnh, "cri/c_tcpa", c.c_tcpa);
+  get(pnh, "cri/c_b", c.c_b);
+  get(pnh, "cri/c_d", c.c_d);
+  get(pnh, "cri/c_k", c.c_k);
+  get(pnh, "cri/dlma", c.dlma_m);
+  get(pnh, "cri/attention_range", c.attention_range_m);
+  get(pnh, "cri/speed_ratio_w", c.speed_ratio_w);
+  get(pnh, "cri/arena_cb", c.arena_cb);
+  get(pnh, "cri/peak_bearing_deg", c.peak_bearing_deg);
+  get(pnh, "cri/zero_when_diverging", c.zero_when_diverging);
+  get(pnh, "cri/domain_unit", c.safe_encounter.domain_unit_m);
+  get(pnh, "cri/turn90_time", c.safe_encounter.turn90_time_s);
+  get(pnh, "cri/advance", c.safe_encounter.advance_m);
+  auto& g = p.risk.colregs;
+  get(pnh, "colregs/head_on_half_angle_deg", g.head_on_half_angle_deg);
+  get(pnh, "colregs/stern_sector_start_deg", g.stern_sector_start_deg);
+  get(pnh, "colregs/max_range", g.max_range_m);
+  p.risk.validate();
+  if (p.frame_id.empty())
+    throw std::invalid_argument("frame_id must not be empty");
+  if (!(p.stale_after > 0.0))
+    throw std::invalid_argument("stale_after must be > 0 s");
+  if (!(p.future_tolerance >= 0.0))
+    throw std::invalid_argument("future_tolerance must be >= 0 s");
+  if (!(p.odom_timeout > 0.0))
+    throw std::invalid_argument("odom_timeout must be > 0 s");
+  if (!(p.min_rate > 0.0 && p.max_rate > p.min_rate))
+    throw std::invalid_argument("min_rate and max_rate must satisfy 0 < min_rate < max_rate");
+  return p;
+}
+
+RiskNode::RiskNode(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : nh_(nh),
+      pnh_(pnh),
+      params_(loadParams(pnh)),
+      assessor_(params_.risk),
+      tf_listener_(tf_buffer_),
+      diag_min_rate_(params_.min_rate),
+      diag_max_rate_(params_.max_rate) {
+  risk_pub_ = nh_.advertise<asv_msgs::RiskAssessment>("risk", 10);
+  if (params_.publish_markers)
+    marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("risk_markers", 2);
+  odom_sub_ = nh_.subscribe("odom", 20, &RiskNode::odomCallback, this);
+  targets_sub_ = nh_.subscribe("targets", 20, &RiskNode::targetsCallback, this);
+
+  updater_.setHardwareID(params_.own_ship);
+  risk_diag_ = std::make_unique<diagnostic_updater::TopicDiagnostic>(
+      "risk", updater_, diagnostic_updater::FrequencyStatusParam(&diag_min_rate_, &diag_max_rate_, 0.1, 10),
+      diagnostic_updater::TimeStampStatusParam(-1.0, 5.0));
+  updater_.add("inputs", this, &RiskNode::diagnose);
+  diag_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
+  ROS_INFO("risk_node: own ship '%s', frame '%s', t_max %.0f s, d_min %.0f m, t_safe %.0f s, d_safe %.0f m",
+           params_.own_ship.c_str(), params_.frame_id.c_str(), params_.risk.level.t_max_s,
+           params_.risk.level.d_min_m, params_.risk.level.t_safe_s, params_.risk.level.d_safe_m);
+}
+
+void RiskNode::reject(Reject why, const std::string& what) {
+  ++rejected_[static_cast<size_t>(why)];
+  ROS_WARN_THROTTLE(5.0, "risk_node: rejected %s (%s); further rejections are counted in diagnostics",
+                    what.c_str(), toString(why));
+}
+
+bool RiskNode::transformToWorking(const std::string& frame, const ros::Time& stamp, tf2::Transform& out) {
+  if (frame.empty())
+    return false;
+  const std::string f = frame[0] == '/' ? frame.substr(1) : frame;
+  if (f == params_.frame_id) {
+    out.setIdentity();
+    return true;
+  }
+  try {
+    const geometry_msgs::TransformStamped t = tf_buffer_.lookupTransform(params_.frame_id, f, stamp);
+    tf2::fromMsg(t.transform, out);
+    return true;
+  } catch (const tf2::TransformException&) {
+    return false;
+  }
+}
+
+void RiskNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
+  asv::ShipState s;
+  tf2::Transform t;
+  if (!transformToWorking(msg->header.frame_id, msg->header.stamp, t)) {
+    ++odom_rejected_;
+    reject(Reject::Frame, "own odometry in frame '" + msg->header.frame_id + "'");
+    return;
+  }
+  nav_msgs::Odometry o = *msg;
+  if (msg->header.frame_id != params_.frame_id) {
+    tf2::Transform pose;
+    tf2::fromMsg(o.pose.pose, pose);
+    tf2::toMsg(t * pose, o.pose.pose);
+  }
+  const Reject r = odometryToShipState(o, params_.own_ship, s);
+  if (r != Reject::None) {
+    ++odom_rejected_;
+    reject(r, "own odometry");
+    return;
+  }
+  own_ = s;
+  own_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+}
+
+void RiskNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
+  const ros::Time now = ros::Time::now();
+  targets_seen_ += msg->targets.size();
+  if (!own_) {
+    ROS_WARN_THROTTLE(10.0, "risk_node: no own-ship odometry yet on '%s'; targets not assessed",
+                      odom_sub_.getTopic().c_str());
+    return;
+  }
+  if ((now - own_stamp_).toSec() > params_.odom_timeout) {
+    ROS_WARN_THROTTLE(10.0, "risk_node: own-ship odometry is %.1f s old (odom_timeout %.1f s); not assessing",
+                      (now - own_stamp_).toSec(), params_.odom_timeout);
+    return;
+  }
+  tf2::Transform t;
+  uint32_t rejected = 0;
+  if (!transformToWorking(msg->header.frame_id, msg->header.stamp, t)) {
+    for (const auto& tg : msg->targets)
+      reject(Reject::Frame, "target '" + tg.id + "' in frame '" + msg->header.frame_id + "'");
+    rejected = msg->targets.size();
+  }
+  const double yaw = tf2::getYaw(t.getRotation());
+  std::vector<asv::ShipState> states;
+  std::vector<uint32_t> mmsis;
+  std::unordered_set<std::string> ids;
+  states.reserve(msg->targets.size());
+  if (rejected == 0) {
+    for (const asv_msgs::Target& tg : msg->targets) {
+      asv::ShipState s;
+      Reject r = targetToShipState(tg, s);
+      if (r == Reject::None && !ids.insert(tg.id).second)
+        r = Reject::Duplicate;
+      if (r == Reject::None && !tg.stamp.isZero()) {
+        const double age = (now - tg.stamp).toSec();
+        if (age > params_.stale_after)
+          r = Reject::Stale;
+        if (-age > params_.future_tolerance)
+          r = Reject::Future;
+      }
+      if (r != Reject::None) {
+        reject(r, "target '" + tg.id + "'");
+        ++rejected;
+        continue;
+      }
+      if (msg->header.frame_id != params_.frame_id) {
+        const tf2::Vector3 p = t * tf2::Vector3(s.position.x(), s.position.y(), 0.0);
+        s.position = {p.x(), p.y()};
+        s.course = asv::wrapTwoPi(s.course - yaw);  // a counter-clockwise frame rotation lowers courses
+        s.heading = asv::wrapTwoPi(s.heading - yaw);
+      }
+      states.push_back(std::move(s));
+      mmsis.push_back(tg.mmsi);
+    }
+  }
+
+  const std::vector<asv::TargetRisk> risks = assessor_.assessAll(*own_, states);
+  asv_msgs::RiskAssessment ra;
+  ra.header.stamp = msg->header.stamp.isZero() ? now : msg->header.stamp;
+  ra.header.frame_id = params_.frame_id;
+  ra.own_ship = params_.own_ship;
+  ra.own_position.x = own_->position.x();
+  ra.own_position.y = own_->position.y();
+  ra.own_course = own_->course;
+  ra.own_speed = own_->speed;
+  ra.rejected_targets = rejected;
+  for (size_t i = 0; i < risks.size(); ++i) {
+    ra.targets.push_back(toMsg(risks[i], mmsis[i]));
+    ra.max_cri = std::max(ra.max_cri, risks[i].cri.cri);
+    ra.max_risk_level = std::max(ra.max_risk_level, ra.targets.back().risk_level);
+  }
+  risk_pub_.publish(ra);
+  risk_diag_->tick(ra.header.stamp);
+  ++assessments_;
+  if (params_.publish_markers)
+    marker_pub_.publish(makeMarkers(ra));
+}
+
+visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssessment& ra) const {
+  visualization_msgs::MarkerArray arr;
+  visualization_msgs::Marker clear;
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  arr.markers.push_back(clear);
+  int id = 0;
+  for (const asv_msgs::TargetRisk& t : ra.targets) {
+    visualization_msgs::Marker m;
+    m.header = ra.header;
+    m.pose.orientation.w = 1.0;
+    m.color.a = 1.0;
+    m.color.r = riskColour(t.risk_level, 0);
+    m.color.g = riskColour(t.risk_level, 1);
+    m.color.b = riskColour(t.risk_level, 2);
+    if (t.tcpa > 0.0) {
+      m.ns = "cpa_line";
+      m.id = id++;
+      m.type = visualization_msgs::Marker::LINE_LIST;
+      m.scale.x = 10.0;
+      m.points = {t.own_cpa_position, t.target_cpa_position};
+      arr.markers.push_back(m);
+      m.points.clear();
+      m.ns = "cpa_point";
+      m.id = id++;
+      m.type = visualization_msgs::Marker::SPHERE;
+      m.pose.position = t.target_cpa_position;
+      m.scale.x = m.scale.y = m.scale.z = 40.0;
+      arr.markers.push_back(m);
+    }
+    m.ns = "label";
+    m.id = id++;
+    m.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+    m.pose.position.x = ra.own_position.x + t.range * std::sin(t.bearing);
+    m.pose.position.y = ra.own_position.y + t.range * std::cos(t.bearing) + 150.0;
+    m.scale.z = 80.0;
+    static const char* roles[] = {"-", "give-way", "stand-on", "both give-way"};
+    std::ostringstream s;
+    s.precision(2);
+    s << std::fixed << t.target_id << " CRI " << t.cri << "\nTCPA " << t.tcpa / 60.0 << " min DCPA "
+      << t.dcpa / 1852.0 << " nm\n"
+      << roles[std::min<uint8_t>(t.own_role, 3)] << (t.compliant ? "" : " NON-COMPLIANT");
+    m.text = s.str();
+    arr.markers.push_back(m);
+  }
+  return arr;
+}
+
+void RiskNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
+  uint64_t total = 0;
+  for (size_t i = 1; i < rejected_.size(); ++i) {
+    stat.add(std::string("rejected ") + toString(static_cast<Reject>(i)), rejected_[i]);
+    total += rejected_[i];
+  }
+  stat.add("assessments", assessments_);
+  stat.add("targets received", targets_seen_);
+  stat.add("own odometry rejected", odom_rejected_);
+  stat.add("own ship known", own_.has_value());
+  if (total > rejected_at_last_diag_)
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "%lu inputs rejected since the last report",
+                  static_cast<unsigned long>(total - rejected_at_last_diag_));
+  else if (!own_)
+    stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no own-ship odometry");
+  else
+    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "inputs ok");
+  rejected_at_last_diag_ = total;
+}
+
+}  // namespace asv_risk

@@ -1,0 +1,87 @@
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "asv_risk/conversions.h"
+
+using namespace asv_risk;
+
+TEST(Conversions, OdometryYawAndBodyTwistBecomeCourseOverGround) {
+  nav_msgs::Odometry o;
+  // ENU yaw 0 (heading east, course 090), moving 3 m/s ahead and 4 m/s to the left (north).
+  o.pose.pose.orientation.w = 1.0;
+  o.pose.pose.position.x = 10.0;
+  o.twist.twist.linear.x = 3.0;
+  o.twist.twist.linear.y = 4.0;
+  asv::ShipState s;
+  ASSERT_EQ(odometryToShipState(o, "own", s), Reject::None);
+  EXPECT_NEAR(asv::radToDeg(s.heading), 90.0, 1e-9);
+  EXPECT_NEAR(s.speed, 5.0, 1e-12);
+  EXPECT_NEAR(asv::radToDeg(s.course), asv::radToDeg(std::atan2(3.0, 4.0)), 1e-9);  // 36.87 deg
+  EXPECT_DOUBLE_EQ(s.position.x(), 10.0);
+  // Yaw +90 deg (heading north): forward speed 2 m/s means course 000.
+  o.pose.pose.orientation.z = std::sin(asv::kPi / 4);
+  o.pose.pose.orientation.w = std::cos(asv::kPi / 4);
+  o.twist.twist.linear.x = 2.0;
+  o.twist.twist.linear.y = 0.0;
+  ASSERT_EQ(odometryToShipState(o, "own", s), Reject::None);
+  EXPECT_NEAR(asv::wrapPi(s.course), 0.0, 1e-9);
+  // Stopped: the course is the heading.
+  o.twist.twist.linear.x = 0.0;
+  ASSERT_EQ(odometryToShipState(o, "own", s), Reject::None);
+  EXPECT_NEAR(asv::wrapPi(s.course), 0.0, 1e-9);
+}
+
+TEST(Conversions, BadOdometryIsRejected) {
+  nav_msgs::Odometry o;
+  o.pose.pose.orientation.w = 1.0;
+  o.pose.pose.position.y = std::numeric_limits<double>::quiet_NaN();
+  asv::ShipState s;
+  EXPECT_EQ(odometryToShipState(o, "own", s), Reject::NonFinite);
+  o.pose.pose.position.y = 0.0;
+  o.pose.pose.orientation.w = 0.0;  // zero quaternion
+  EXPECT_EQ(odometryToShipState(o, "own", s), Reject::Impossible);
+}
+
+TEST(Conversions, TargetChecks) {
+  asv_msgs::Target t;
+  t.id = "ais:1";
+  t.position.x = 100;
+  t.course_over_ground = asv::degToRad(270.0);
+  t.speed_over_ground = 5.0;
+  asv::ShipState s;
+  ASSERT_EQ(targetToShipState(t, s), Reject::None);
+  EXPECT_DOUBLE_EQ(s.heading, s.course);  // no heading: course stands in
+  t.has_heading = true;
+  t.heading = asv::degToRad(265.0);
+  ASSERT_EQ(targetToShipState(t, s), Reject::None);
+  EXPECT_NEAR(asv::radToDeg(s.heading), 265.0, 1e-9);
+  t.heading = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(targetToShipState(t, s), Reject::NonFinite);
+  t.has_heading = false;
+  t.speed_over_ground = 60.0;  // 117 kn
+  EXPECT_EQ(targetToShipState(t, s), Reject::Impossible);
+  t.speed_over_ground = -1.0;
+  EXPECT_EQ(targetToShipState(t, s), Reject::Impossible);
+  t.speed_over_ground = 5.0;
+  t.id.clear();
+  EXPECT_EQ(targetToShipState(t, s), Reject::EmptyId);
+}
+
+TEST(Conversions, RiskMessageCarriesTheCoreResult) {
+  asv::RiskAssessor a;
+  asv::ShipState own, tgt;
+  own.speed = 5.0;
+  tgt.id = "t";
+  tgt.position = {0, 5000};
+  tgt.course = tgt.heading = asv::kPi;
+  tgt.speed = 5.0;
+  const asv_msgs::TargetRisk m = toMsg(a.assess(own, tgt), 123);
+  EXPECT_EQ(m.target_id, "t");
+  EXPECT_EQ(m.mmsi, 123u);
+  EXPECT_NEAR(m.tcpa, 500.0, 1e-9);
+  EXPECT_EQ(m.encounter, asv_msgs::TargetRisk::ENCOUNTER_HEAD_ON);
+  EXPECT_EQ(m.own_role, asv_msgs::TargetRisk::ROLE_BOTH_GIVE_WAY);
+  EXPECT_EQ(m.applicable_rule, 14);
+  EXPECT_EQ(m.risk_level, asv_msgs::TargetRisk::RISK_URGENT);  // 500 s, 0 m: within t_safe, d_safe
+}
