@@ -100,8 +100,12 @@ double criUSpeedRatio(double k, double course_diff, const CriConfig& cfg) {
 }
 
 CriResult computeCri(const ShipState& own, const ShipState& target, const Cpa& cpa, const CriConfig& cfg) {
+  return computeCri(own, target, cpa, cfg, relativeBearing(own, target.position));
+}
+
+CriResult computeCri(const ShipState& own, const ShipState& target, const Cpa& cpa, const CriConfig& cfg,
+                     double theta) {
   CriResult r;
-  const double theta = relativeBearing(own, target.position);
   const SafeEncounter se = wuSafeEncounter(theta, target.speed, cfg.safe_encounter);
   r.d1 = se.d1_m;
   r.d2 = se.d2_m;

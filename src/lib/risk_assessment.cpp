@@ -13,9 +13,9 @@ TargetRisk RiskAssessor::assess(const ShipState& own, const ShipState& target) {
   r.id = target.id;
   r.cpa = computeCpa(own, target);
   r.range = r.cpa.range;
-  r.true_bearing = trueBearing(own.position, target.position);
-  r.cri = computeCri(own, target, r.cpa, cfg_.cri);
   r.geometry = classifyEncounter(own, target, r.cpa, cfg_.colregs);
+  r.true_bearing = wrapTwoPi(r.geometry.relative_bearing + own.heading);
+  r.cri = computeCri(own, target, r.cpa, cfg_.cri, r.geometry.relative_bearing);
   r.compliance = monitor_.update(target.id, r.cpa.tcpa, r.cpa.dcpa);
   r.rule = r.compliance.decision == RuleDecision::Rule2 ? 2 : applicableRule(r.geometry.encounter);
   return r;

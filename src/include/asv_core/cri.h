@@ -54,5 +54,8 @@ void criTcpaBreakpoints(double dcpa, double range, double relative_speed, const 
                         double& t2);
 
 CriResult computeCri(const ShipState& own, const ShipState& target, const Cpa& cpa, const CriConfig& cfg);
+// The same with the target's relative bearing [rad] already known (saves an atan2 per target).
+CriResult computeCri(const ShipState& own, const ShipState& target, const Cpa& cpa, const CriConfig& cfg,
+                     double relative_bearing);
 
 }  // namespace asv
