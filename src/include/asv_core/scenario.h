@@ -1,0 +1,69 @@
+// Scenario files, format 1 (ARCHITECTURE.md section 5): one YAML scenario per file. Unknown keys,
+// missing fields, ambiguous position forms, unit mistakes and ships that start overlapping are errors
+// naming the file, line and key.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "asv_core/geodesy.h"
+#include "asv_core/param_map.h"
+#include "asv_core/planning.h"
+
+namespace asv {
+
+class ScenarioError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class Behaviour : uint8_t { Constant, Waypoints, GiveWay, NonCompliant, Planner };
+const char* toString(Behaviour b);
+
+struct ScenarioShip {
+  std::string name;
+  uint32_t mmsi = 0;                // 0: the simulator assigns one
+  std::string model = "kinematic";  // vessel preset: kinematic | <3-DOF preset name>
+  char ais_class = 'A';             // 'A' (types 1/5) or 'B' (types 18/24) for NMEA emission
+  double length = 0.0;              // [m] overall length (0: the model's)
+  double beam = 0.0;                // [m]
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] ENU at t = 0
+  double course = 0.0;                                 // [rad] nautical
+  double speed = 0.0;                                  // [m/s]
+  std::optional<Eigen::Vector2d> goal;                 // [m] ENU
+  std::string planner;                                 // plugin short name; empty: none
+  Behaviour behaviour = Behaviour::Constant;  // targets only; the own ship plans (or steers for its goal)
+  std::vector<Eigen::Vector2d> waypoints;     // [m] ENU, for Behaviour::Waypoints
+};
+
+struct Scenario {
+  int format = 1;
+  std::string name;
+  std::string description;
+  std::string source;             // file it was read from
+  double duration = 0.0;          // [s]
+  GeoPoint origin;                // geodetic origin of the local frame
+  bool has_origin = false;        // false: origin defaults to 0 N 0 E (documented)
+  double min_separation = 926.0;  // [m] evaluation threshold (default 0.5 nm)
+  ScenarioShip own;
+  std::vector<ScenarioShip> targets;
+  std::vector<StaticObstacle> obstacles;
+  ParamMap planner_params;  // flattened: nested maps become "a/b" keys
+
+  LocalFrame frame() const { return LocalFrame(origin.lat_deg, origin.lon_deg); }
+  // Every ship that runs a planner: the own ship if it has one, and targets with behaviour planner.
+  std::vector<const ScenarioShip*> planningShips() const;
+};
+
+// Short planner names (ARCHITECTURE.md section 5).
+const std::vector<std::string>& knownPlanners();
+
+// Parses a scenario; `source` names the file in error messages. Throws ScenarioError.
+Scenario parseScenario(const std::string& yaml_text, const std::string& source = "<string>");
+Scenario loadScenario(const std::string& path);
+
+}  // namespace asv
