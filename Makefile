@@ -36,6 +36,7 @@ test: build
 	@rm -rf build/test_results
 	@$(DEVEL) && $(CATKIN) run_tests -j1 > build/run_tests.log 2>&1 || true
 	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING" build/run_tests.log || true
+	@scripts/fuzz_smoke.sh 20 || true
 	@scripts/test_summary.py build/test_results
 
 bench: build

@@ -1,0 +1,171 @@
+#include <gtest/gtest.h>
+
+#include "asv_core/ais.h"
+#include "asv_core/simulation.h"
+
+using namespace asv;
+
+namespace {
+std::string scenarioYaml(const std::string& targets, const std::string& own_extra = "") {
+  return "format: 1\nname: t\nduration_s: 3600\norigin: {lat_deg: 54.6, lon_deg: 18.8}\n"
+         "own_ship:\n  name: own\n  position: {x_m: 0, y_m: 0}\n  course_deg: 0\n  speed_mps: 5\n" +
+         own_extra + "targets:\n" + targets;
+}
+void run(Simulation& sim, double seconds) {
+  const int n = static_cast<int>(std::lround(seconds / sim.config().dt));
+  for (int i = 0; i < n; ++i)
+    sim.step();
+}
+}  // namespace
+
+TEST(Simulation, ConstantTargetsMoveOnStraightLinesExactly) {
+  Simulation sim(parseScenario(
+      scenarioYaml("  - {name: a, position: {x_m: 1000, y_m: 0}, course_deg: 90, speed_mps: 4}\n")));
+  run(sim, 100.0);
+  EXPECT_NEAR(sim.time(), 100.0, 1e-9);
+  EXPECT_NEAR(sim.find("a")->position().x(), 1400.0, 1e-6);
+  EXPECT_NEAR(sim.find("a")->position().y(), 0.0, 1e-6);
+  EXPECT_NEAR(sim.own().position().y(), 500.0, 1e-6);
+  EXPECT_NEAR(sim.find("a")->path_length, 400.0, 1e-6);
+}
+
+TEST(Simulation, HeadOnWithoutActionCollidesAndIsRefereed) {
+  // 2 km apart closing at 10 m/s: hulls of 100 m meet after (2000 - 100) / 10 = 190 s.
+  Simulation sim(parseScenario(
+      scenarioYaml("  - {name: a, position: {x_m: 0, y_m: 2000}, course_deg: 180, speed_mps: 5}\n")));
+  run(sim, 185.0);
+  EXPECT_FALSE(sim.collided());
+  run(sim, 10.0);
+  EXPECT_TRUE(sim.collided());
+  ASSERT_FALSE(sim.events().empty());
+  bool collision = false, near = false;
+  for (const auto& e : sim.events()) {
+    collision |= e.type == SimEvent::Collision;
+    near |= e.type == SimEvent::NearMiss;
+  }
+  EXPECT_TRUE(collision);
+  EXPECT_TRUE(near);
+}
+
+TEST(Simulation, PassingClearHasTheHandComputedMinimumSeparation) {
+  Simulation sim(parseScenario(
+      scenarioYaml("  - {name: a, position: {x_m: 1500, y_m: 4000}, course_deg: 180, speed_mps: 5}\n")));
+  run(sim, 700.0);
+  EXPECT_FALSE(sim.collided());
+  EXPECT_NEAR(sim.minSeparationOwn(), 1500.0, 1e-6);  // abeam at t = 400 s
+  EXPECT_NEAR(sim.minDistanceTo(1), 1500.0, 1e-6);
+}
+
+TEST(Simulation, GiveWayTargetTurnsToStarboardNonCompliantStandsOn) {
+  // Crossing from our port side on a collision course: we are on its starboard bow, so it gives way.
+  const std::string t =
+      "  - {name: gw, position: {x_m: -3000, y_m: 3000}, course_deg: 90, speed_mps: 5, behaviour: "
+      "give_way}\n";
+  Simulation sim(parseScenario(scenarioYaml(t)));
+  run(sim, 60.0);
+  const SimVessel* gw = sim.find("gw");
+  EXPECT_TRUE(gw->giving_way);
+  EXPECT_NEAR(radToDeg(wrapPi(gw->course_sp - degToRad(90.0))), 40.0, 1e-9);  // starboard, >= 30 deg
+  run(sim, 1200.0);
+  EXPECT_FALSE(sim.collided());
+  EXPECT_GT(sim.minSeparationOwn(), 926.0);
+  EXPECT_FALSE(sim.find("gw")->giving_way);  // resumed after passing
+  Simulation nc(
+      parseScenario(scenarioYaml("  - {name: nc, position: {x_m: -3000, y_m: 3000}, course_deg: 90, "
+                                 "speed_mps: 5, behaviour: non_compliant}\n")));
+  run(nc, 700.0);
+  EXPECT_NEAR(nc.find("nc")->cog(), degToRad(90.0), 1e-9);
+  EXPECT_TRUE(nc.collided());
+}
+
+TEST(Simulation, OwnShipWithoutPlannerSteersForItsGoalAndArrives) {
+  Simulation sim(parseScenario(
+      scenarioYaml("  - {name: a, position: {x_m: 5000, y_m: 0}, course_deg: 0, speed_mps: 1}\n",
+                   "  goal: {x_m: 3000, y_m: 3000}\n")));
+  run(sim, 1000.0);
+  EXPECT_TRUE(sim.own().arrived);
+  EXPECT_GT(sim.own().arrival_time, 0.0);
+}
+
+TEST(Simulation, ThreeDofTargetFollowsASetpoint) {
+  Simulation sim(parseScenario(scenarioYaml(
+      "  - {name: b, model: wu_asv_40m, behaviour: planner, planner: ga, goal: {x_m: 5000, y_m: 5000},"
+      " position: {x_m: 2000, y_m: 0}, course_deg: 0, speed_mps: 5}\n")));
+  ASSERT_TRUE(sim.setSetpoint("b", degToRad(90.0), 5.0));
+  EXPECT_FALSE(sim.setSetpoint("nobody", 0.0, 1.0));
+  EXPECT_FALSE(sim.setSetpoint("b", std::nan(""), 1.0));
+  run(sim, 120.0);
+  EXPECT_NEAR(radToDeg(wrapPi(sim.find("b")->state().psi - degToRad(90.0))), 0.0, 2.0);
+  EXPECT_NEAR(sim.find("b")->sog(), 5.0, 0.3);
+}
+
+TEST(NmeaEmitter, ItuReportingIntervals) {
+  EXPECT_DOUBLE_EQ(NmeaEmitter::reportingInterval('A', knotsToMps(10), 0.0), 10.0);
+  EXPECT_NEAR(NmeaEmitter::reportingInterval('A', knotsToMps(10), degToRad(1.0)), 10.0 / 3.0, 1e-12);
+  EXPECT_DOUBLE_EQ(NmeaEmitter::reportingInterval('A', knotsToMps(20), 0.0), 6.0);
+  EXPECT_DOUBLE_EQ(NmeaEmitter::reportingInterval('A', knotsToMps(20), degToRad(1.0)), 2.0);
+  EXPECT_DOUBLE_EQ(NmeaEmitter::reportingInterval('A', knotsToMps(25), 0.0), 2.0);
+  EXPECT_DOUBLE_EQ(NmeaEmitter::reportingInterval('A', 0.5, 0.0, 1), 180.0);  // at anchor
+  EXPECT_DOUBLE_EQ(NmeaEmitter::reportingInterval('B', knotsToMps(5), 0.0), 30.0);
+  EXPECT_DOUBLE_EQ(NmeaEmitter::reportingInterval('B', knotsToMps(1), 0.0), 180.0);
+}
+
+TEST(NmeaEmitter, DecodedReportsGiveBackTheTrueStates) {
+  Simulation sim(parseScenario(scenarioYaml(
+      "  - {name: a, mmsi: 244000001, position: {x_m: 3000, y_m: 1000}, course_deg: 270, speed_kn: 10}\n"
+      "  - {name: b, ais_class: B, position: {x_m: -2000, y_m: 500}, course_deg: 45, speed_kn: 6}\n")));
+  EmitterConfig ec;
+  ec.radar_dropout = 0.0;
+  NmeaEmitter em(ec, 7);
+  ais::Decoder dec;
+  int reports_a = 0, reports_b = 0, statics = 0, ttms = 0;
+  for (int k = 0; k < 1200; ++k) {  // 120 s
+    std::vector<std::string> ais_lines, ttm_lines;
+    em.update(sim, ais_lines, ttm_lines);
+    ttms += static_cast<int>(ttm_lines.size());
+    for (const auto& l : ais_lines) {
+      ais::Message m;
+      const ais::Status st = dec.feedLine(l, sim.time(), m);
+      if (st != ais::Status::kMessage) {
+        EXPECT_EQ(st, ais::Status::kPending) << l;
+        continue;
+      }
+      ais::Kinematics kin;
+      if (!ais::toKinematics(m, kin)) {
+        ++statics;
+        continue;
+      }
+      const SimVessel* v = m.mmsi == 244000001u ? sim.find("a") : sim.find("b");
+      ASSERT_TRUE(kin.has_position);
+      const Eigen::Vector2d p = sim.frame().toLocal(kin.lat_deg, kin.lon_deg);
+      // Emitted now from the current state: within the 1/10000' quantisation (~0.19 m north, 0.11 m east).
+      EXPECT_NEAR(p.x(), v->position().x(), 0.2);
+      EXPECT_NEAR(p.y(), v->position().y(), 0.2);
+      EXPECT_NEAR(kin.speed, v->sog(), knotsToMps(0.05) + 1e-9);
+      EXPECT_NEAR(radToDeg(wrapPi(kin.course - v->cog())), 0.0, 0.05 + 1e-9);
+      (m.mmsi == 244000001u ? reports_a : reports_b)++;
+    }
+    sim.step();
+  }
+  EXPECT_NEAR(reports_a, 12, 1);  // class A at 10 kn: every 10 s
+  EXPECT_NEAR(reports_b, 4, 1);   // class B at 6 kn: every 30 s
+  EXPECT_EQ(statics, 3);          // one type 5, one 24A, one 24B within the first 10 s
+  EXPECT_NEAR(ttms, 2 * 48, 2);   // both within radar range, one TTM each per 2.5 s scan
+}
+
+TEST(NmeaEmitter, SameSeedSameSentences) {
+  auto stream = [](uint64_t seed) {
+    Simulation sim(parseScenario(
+        scenarioYaml("  - {name: a, position: {x_m: 3000, y_m: 1000}, course_deg: 270, speed_kn: 10}\n")));
+    NmeaEmitter em(EmitterConfig{}, seed);
+    std::vector<std::string> all, ttm;
+    for (int k = 0; k < 600; ++k) {
+      em.update(sim, all, ttm);
+      sim.step();
+    }
+    all.insert(all.end(), ttm.begin(), ttm.end());
+    return all;
+  };
+  EXPECT_EQ(stream(3), stream(3));
+  EXPECT_NE(stream(3), stream(4));  // the noise differs
+}

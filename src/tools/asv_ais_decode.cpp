@@ -1,0 +1,715 @@
+// asv_ais_decode: AIVDM/AIVDO to JSON, one object per message, in the format of gpsd's
+// `gpsdecode -j` (scaled) and `gpsdecode -u -j` (unscaled), for message types 1-5, 18, 19, 21, 24, 27.
+//
+// Differences from gpsdecode 3.22, all deliberate (see also test_ais_golden.cpp):
+//  - A sentence is never lost to its neighbours: after garbage, a truncated sentence or a bad
+//    checksum on the same line, decoding resumes at the next `!`/`$`.
+//  - A type 24 part B whose part A was not seen is printed with "part":"B" (gpsd's own format for a
+//    lone part) instead of being dropped; part A alone is held until its part B, as gpsd does.
+//  - Scaled output (-j without -u): "turn" keeps its sign (gpsd 3.22 prints the square of the rate,
+//    losing the direction of the turn).
+//  - "device" is the file name for files; "stdin" for standard input (gpsdecode reads stdin only).
+//  - Message types this decoder does not decode (6-17, 20, 22, 23, 25, 26) are counted, not printed.
+//  - Type 1-3 messages longer than 168 bits are accepted (newer gpsd releases accept up to 204).
+// A summary line with every rejection, by reason, goes to stderr at the end.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "asv_core/ais.h"
+#include "asv_core/nmea.h"
+
+namespace {
+
+using namespace asv;
+
+constexpr std::size_t kReadChunk = 1 << 20;
+constexpr std::size_t kOutBuffer = 1 << 20;
+
+const char* const kUsage =
+    "usage: asv_ais_decode [-u] [-h] [FILE...]\n"
+    "\n"
+    "Decodes AIS NMEA 0183 sentences (!AIVDM/!AIVDO, with or without NMEA 4 tag blocks) from the\n"
+    "files given, or from standard input when there is none or FILE is '-', and prints one JSON\n"
+    "object per decoded message, in the format of gpsd's `gpsdecode -j`.\n"
+    "\n"
+    "  -u   unscaled output, as `gpsdecode -u -j`: the raw integer fields (lat/lon in 1/10000 min,\n"
+    "       speed in 1/10 kn, course in 1/10 deg...)\n"
+    "  -h   this help\n"
+    "\n"
+    "Decoded types: 1, 2, 3, 4, 5, 18, 19, 21, 24 (parts A and B merged), 27. Other types are\n"
+    "counted as unsupported. Rejected lines and fragments are counted by reason and summarised on\n"
+    "stderr at the end. Exit status: 0, or 1 when a file could not be read, 2 on a usage error.\n";
+
+// Output buffer with hand-written formatting: printf per field costs more than the decoding.
+class Out {
+public:
+  Out() : buf_(kOutBuffer) {}
+  ~Out() { flush(); }
+
+  void flush() {
+    if (n_ > 0)
+      std::fwrite(buf_.data(), 1, n_, stdout);
+    n_ = 0;
+  }
+  // Called before each record: a record is far below 4 KiB besides the device name.
+  void reserveRecord(std::size_t extra) {
+    if (n_ + 4096 + extra > buf_.size())
+      flush();
+    if (4096 + extra > buf_.size())
+      buf_.resize(4096 + extra);
+  }
+  template <std::size_t N>
+  void lit(const char (&s)[N]) {
+    std::memcpy(buf_.data() + n_, s, N - 1);
+    n_ += N - 1;
+  }
+  void raw(std::string_view s) {
+    std::memcpy(buf_.data() + n_, s.data(), s.size());
+    n_ += s.size();
+  }
+  void u(std::uint64_t v) {
+    char tmp[24];
+    int k = 0;
+    do {
+      tmp[k++] = static_cast<char>('0' + v % 10);
+      v /= 10;
+    } while (v);
+    while (k)
+      buf_[n_++] = tmp[--k];
+  }
+  void i(std::int64_t v) {
+    if (v < 0) {
+      buf_[n_++] = '-';
+      u(static_cast<std::uint64_t>(-(v + 1)) + 1);
+    } else {
+      u(static_cast<std::uint64_t>(v));
+    }
+  }
+  // Zero-padded to `width` digits (%02u, %04u).
+  void pad(std::uint64_t v, int width) {
+    char tmp[24];
+    int k = 0;
+    do {
+      tmp[k++] = static_cast<char>('0' + v % 10);
+      v /= 10;
+    } while (v);
+    while (k < width)
+      tmp[k++] = '0';
+    while (k)
+      buf_[n_++] = tmp[--k];
+  }
+  void b(bool v) {
+    if (v)
+      lit("true");
+    else
+      lit("false");
+  }
+  // Quoted JSON string, escaped as gpsd's json_stringify does.
+  void str(std::string_view s) {
+    buf_[n_++] = '"';
+    for (char c : s) {
+      const unsigned char uc = static_cast<unsigned char>(c);
+      if (uc < 0x20 || uc > 0x7e) {
+        n_ += static_cast<std::size_t>(std::snprintf(buf_.data() + n_, 8, "\\u%04x", uc));
+      } else {
+        if (c == '"' || c == '\\')
+          buf_[n_++] = '\\';
+        buf_[n_++] = c;
+      }
+    }
+    buf_[n_++] = '"';
+  }
+  // v / 10 with one decimal (%.1f of an exact tenth).
+  void tenths(std::uint64_t v) {
+    u(v / 10);
+    buf_[n_++] = '.';
+    buf_[n_++] = static_cast<char>('0' + v % 10);
+  }
+  // raw / 600000 with six decimals, as %.6f: raw * 5 / 3 rounded, never a tie, so integer
+  // arithmetic gives printf's digits exactly.
+  void latlon(std::int32_t raw) {
+    std::int64_t x = static_cast<std::int64_t>(raw) * 5;
+    const bool neg = x < 0;
+    std::uint64_t q = (static_cast<std::uint64_t>(neg ? -x : x) + 1) / 3;
+    if (neg && q != 0)
+      buf_[n_++] = '-';
+    u(q / 1000000);
+    buf_[n_++] = '.';
+    pad(q % 1000000, 6);
+  }
+  void printf1(const char* fmt, double v) {
+    n_ += static_cast<std::size_t>(std::snprintf(buf_.data() + n_, 64, fmt, v));
+  }
+
+private:
+  std::vector<char> buf_;
+  std::size_t n_ = 0;
+};
+
+struct Stats {
+  std::uint64_t lines = 0;
+  std::uint64_t sentences = 0;        // framed sentences, any type
+  std::uint64_t other_sentences = 0;  // framed, but not VDM/VDO
+  std::uint64_t printed = 0;
+  std::uint64_t garbage = 0;      // text outside any sentence
+  std::uint64_t type24_held = 0;  // part A waiting for its part B
+  std::uint64_t reject[static_cast<int>(nmea::Reject::kCount)] = {};
+  std::uint64_t status[static_cast<int>(ais::Status::kCount)] = {};
+};
+
+// Type 24 part A names waiting for their part B, keyed by MMSI (gpsd keeps 8; a few more cost
+// nothing and survive busier channels).
+class Type24Queue {
+public:
+  void put(std::uint32_t mmsi, const ais::Text20& name) {
+    for (auto& e : entries_) {
+      if (e.mmsi == mmsi) {
+        e.name = name;
+        return;
+      }
+    }
+    entries_[next_].mmsi = mmsi;
+    entries_[next_].name = name;
+    next_ = (next_ + 1) % entries_.size();
+  }
+  bool take(std::uint32_t mmsi, ais::Text20& name) {
+    if (mmsi == 0)
+      return false;
+    for (auto& e : entries_) {
+      if (e.mmsi == mmsi) {
+        name = e.name;
+        e.mmsi = 0;  // a repeated part B must not match again
+        return true;
+      }
+    }
+    return false;
+  }
+
+private:
+  struct Entry {
+    std::uint32_t mmsi = 0;
+    ais::Text20 name;
+  };
+  std::array<Entry, 16> entries_{};
+  std::size_t next_ = 0;
+};
+
+class App {
+public:
+  explicit App(bool unscaled) : unscaled_(unscaled) {}
+
+  void processLine(std::string_view line);
+  void finish(const char* prog);
+  void setDevice(std::string_view d) { device_ = d; }
+
+private:
+  void handleSentence(const nmea::Sentence& s);
+  void print(const ais::Message& m);
+  void header(const ais::Message& m);
+  void dims(std::uint32_t bow, std::uint32_t stern, std::uint32_t port, std::uint32_t stbd);
+
+  bool unscaled_;
+  std::string device_ = "stdin";
+  nmea::FramerConfig framer_;
+  ais::Decoder decoder_;
+  nmea::Sentence sentence_;
+  ais::Message message_;
+  Type24Queue queue24_;
+  double now_ = 0.0;
+  Stats stats_;
+  Out out_;
+};
+
+void App::processLine(std::string_view line) {
+  ++stats_.lines;
+  // '#' starts a comment line, as in gpsd's test logs (which comment out sentences they skip).
+  const std::string_view t = nmea::trim(line);
+  if (t.empty() || t[0] == '#')
+    return;
+  std::size_t pos = 0;
+  bool any = false;
+  while (pos < line.size()) {
+    const std::size_t start = nmea::findSentenceStart(line, pos);
+    if (start == std::string_view::npos)
+      break;
+    if (start > pos && !nmea::trim(line.substr(pos, start - pos)).empty())
+      ++stats_.garbage;
+    any = true;
+    const std::string_view rest = line.substr(start);
+    const nmea::Reject r = nmea::parseSentence(rest, sentence_, framer_);
+    if (r == nmea::Reject::kNone) {
+      handleSentence(sentence_);
+      pos = start + sentence_.end;
+      // Receiver metadata after the checksum (USCG ",d-109,S2105,...") is not garbage; anything up
+      // to the next sentence start on the line is part of that suffix.
+      const std::size_t next = nmea::findSentenceStart(line, pos);
+      if (next == std::string_view::npos)
+        break;
+      pos = next;
+      continue;
+    }
+    ++stats_.reject[static_cast<int>(r)];
+    pos = start + 1;
+  }
+  if (!any)
+    ++stats_.garbage;
+}
+
+void App::handleSentence(const nmea::Sentence& s) {
+  ++stats_.sentences;
+  if (s.tag.has_time)
+    now_ = s.tag.unix_time;
+  const ais::Status st = decoder_.feed(s, now_, message_);
+  if (st == ais::Status::kNotAis) {
+    ++stats_.other_sentences;
+    return;
+  }
+  ++stats_.status[static_cast<int>(st)];
+  if (st == ais::Status::kMessage)
+    print(message_);
+}
+
+void App::header(const ais::Message& m) {
+  out_.lit("{\"class\":\"AIS\",\"device\":");
+  out_.str(device_);
+  out_.lit(",\"type\":");
+  out_.u(m.type);
+  out_.lit(",\"repeat\":");
+  out_.u(m.repeat);
+  out_.lit(",\"mmsi\":");
+  out_.u(m.mmsi);
+  if (unscaled_)
+    out_.lit(",\"scaled\":false");
+  else
+    out_.lit(",\"scaled\":true");
+}
+
+void App::dims(std::uint32_t bow, std::uint32_t stern, std::uint32_t port, std::uint32_t stbd) {
+  out_.lit(",\"to_bow\":");
+  out_.u(bow);
+  out_.lit(",\"to_stern\":");
+  out_.u(stern);
+  out_.lit(",\"to_port\":");
+  out_.u(port);
+  out_.lit(",\"to_starboard\":");
+  out_.u(stbd);
+}
+
+void App::print(const ais::Message& m) {
+  using namespace ais;
+  // Part A of a type 24 waits for its part B, as in gpsd.
+  const auto* t24 = std::get_if<StaticDataReport>(&m.body);
+  Text20 name24;
+  bool merged24 = false;
+  if (t24) {
+    if (t24->part == 0) {
+      queue24_.put(m.mmsi, t24->shipname);
+      ++stats_.type24_held;
+      return;
+    }
+    merged24 = queue24_.take(m.mmsi, name24);
+  }
+
+  out_.reserveRecord(device_.size() * 6);
+  header(m);
+  const bool sc = !unscaled_;
+  if (const auto* a = std::get_if<PositionReportA>(&m.body)) {
+    out_.lit(",\"status\":");
+    out_.u(a->status);
+    out_.lit(",\"status_text\":\"");
+    out_.raw(navStatusText(a->status));
+    out_.lit("\",\"turn\":");
+    if (!sc) {
+      out_.i(a->turn);
+    } else if (a->turn == -128) {
+      out_.lit("\"nan\"");
+    } else if (a->turn == -127) {
+      out_.lit("\"fastleft\"");
+    } else if (a->turn == 127) {
+      out_.lit("\"fastright\"");
+    } else {
+      const double r = a->turn / 4.733;
+      double v = std::nearbyint(r * r);
+      if (a->turn < 0 && v != 0.0)
+        v = -v;
+      out_.printf1("%.0f", v);
+    }
+    out_.lit(",\"speed\":");
+    if (!sc)
+      out_.u(a->speed);
+    else if (a->speed == 1023)
+      out_.lit("\"nan\"");
+    else if (a->speed == 1022)
+      out_.lit("\"fast\"");
+    else
+      out_.tenths(a->speed);
+    out_.lit(",\"accuracy\":");
+    out_.b(a->accuracy);
+    out_.lit(",\"lon\":");
+    sc ? out_.latlon(a->lon) : out_.i(a->lon);
+    out_.lit(",\"lat\":");
+    sc ? out_.latlon(a->lat) : out_.i(a->lat);
+    out_.lit(",\"course\":");
+    sc ? out_.tenths(a->course) : out_.u(a->course);
+    out_.lit(",\"heading\":");
+    out_.u(a->heading);
+    out_.lit(",\"second\":");
+    out_.u(a->second);
+    out_.lit(",\"maneuver\":");
+    out_.u(a->maneuver);
+    out_.lit(",\"raim\":");
+    out_.b(a->raim);
+    out_.lit(",\"radio\":");
+    out_.u(a->radio);
+  } else if (const auto* s = std::get_if<BaseStationReport>(&m.body)) {
+    out_.lit(",\"timestamp\":\"");
+    out_.pad(s->year, 4);
+    out_.lit("-");
+    out_.pad(s->month, 2);
+    out_.lit("-");
+    out_.pad(s->day, 2);
+    out_.lit("T");
+    out_.pad(s->hour, 2);
+    out_.lit(":");
+    out_.pad(s->minute, 2);
+    out_.lit(":");
+    out_.pad(s->second, 2);
+    out_.lit("Z\",\"accuracy\":");
+    out_.b(s->accuracy);
+    out_.lit(",\"lon\":");
+    sc ? out_.latlon(s->lon) : out_.i(s->lon);
+    out_.lit(",\"lat\":");
+    sc ? out_.latlon(s->lat) : out_.i(s->lat);
+    out_.lit(",\"epfd\":");
+    out_.u(s->epfd);
+    out_.lit(",\"epfd_text\":\"");
+    out_.raw(epfdText(s->epfd));
+    out_.lit("\",\"raim\":");
+    out_.b(s->raim);
+    out_.lit(",\"radio\":");
+    out_.u(s->radio);
+  } else if (const auto* v = std::get_if<StaticVoyageData>(&m.body)) {
+    out_.lit(",\"imo\":");
+    out_.u(v->imo);
+    out_.lit(",\"ais_version\":");
+    out_.u(v->ais_version);
+    out_.lit(",\"callsign\":");
+    out_.str(v->callsign.view());
+    out_.lit(",\"shipname\":");
+    out_.str(v->shipname.view());
+    out_.lit(",\"shiptype\":");
+    out_.u(v->shiptype);
+    out_.lit(",\"shiptype_text\":\"");
+    out_.raw(shipTypeText(v->shiptype));
+    out_.lit("\"");
+    dims(v->to_bow, v->to_stern, v->to_port, v->to_starboard);
+    out_.lit(",\"epfd\":");
+    out_.u(v->epfd);
+    out_.lit(",\"epfd_text\":\"");
+    out_.raw(epfdText(v->epfd));
+    out_.lit("\",\"eta\":\"");
+    out_.pad(v->month, 2);
+    out_.lit("-");
+    out_.pad(v->day, 2);
+    out_.lit("T");
+    out_.pad(v->hour, 2);
+    out_.lit(":");
+    out_.pad(v->minute, 2);
+    out_.lit("Z\",\"draught\":");
+    sc ? out_.tenths(v->draught) : out_.u(v->draught);
+    out_.lit(",\"destination\":");
+    out_.str(v->destination.view());
+    out_.lit(",\"dte\":");
+    out_.u(v->dte ? 1 : 0);
+  } else if (const auto* b = std::get_if<PositionReportB>(&m.body)) {
+    out_.lit(",\"reserved\":");
+    out_.u(b->reserved);
+    out_.lit(",\"speed\":");
+    sc ? out_.tenths(b->speed) : out_.u(b->speed);
+    out_.lit(",\"accuracy\":");
+    out_.b(b->accuracy);
+    out_.lit(",\"lon\":");
+    sc ? out_.latlon(b->lon) : out_.i(b->lon);
+    out_.lit(",\"lat\":");
+    sc ? out_.latlon(b->lat) : out_.i(b->lat);
+    out_.lit(",\"course\":");
+    sc ? out_.tenths(b->course) : out_.u(b->course);
+    out_.lit(",\"heading\":");
+    out_.u(b->heading);
+    out_.lit(",\"second\":");
+    out_.u(b->second);
+    out_.lit(",\"regional\":");
+    out_.u(b->regional);
+    if (m.type == 18) {
+      out_.lit(",\"cs\":");
+      out_.b(b->cs);
+      out_.lit(",\"display\":");
+      out_.b(b->display);
+      out_.lit(",\"dsc\":");
+      out_.b(b->dsc);
+      out_.lit(",\"band\":");
+      out_.b(b->band);
+      out_.lit(",\"msg22\":");
+      out_.b(b->msg22);
+      out_.lit(",\"raim\":");
+      out_.b(b->raim);
+      out_.lit(",\"radio\":");
+      out_.u(b->radio);
+    } else {
+      out_.lit(",\"shipname\":");
+      out_.str(b->shipname.view());
+      out_.lit(",\"shiptype\":");
+      out_.u(b->shiptype);
+      out_.lit(",\"shiptype_text\":\"");
+      out_.raw(shipTypeText(b->shiptype));
+      out_.lit("\"");
+      dims(b->to_bow, b->to_stern, b->to_port, b->to_starboard);
+      out_.lit(",\"epfd\":");
+      out_.u(b->epfd);
+      out_.lit(",\"epfd_text\":\"");
+      out_.raw(epfdText(b->epfd));
+      out_.lit("\",\"raim\":");
+      out_.b(b->raim);
+      out_.lit(",\"dte\":");
+      out_.u(b->dte ? 1 : 0);
+      out_.lit(",\"assigned\":");
+      out_.b(b->assigned);
+    }
+  } else if (const auto* n = std::get_if<AidToNavigation>(&m.body)) {
+    out_.lit(",\"aid_type\":");
+    out_.u(n->aid_type);
+    out_.lit(",\"aid_type_text\":\"");
+    out_.raw(aidTypeText(n->aid_type));
+    out_.lit("\",\"name\":");
+    out_.str(n->name.view());
+    // gpsd orders these differently in its two modes.
+    if (sc) {
+      out_.lit(",\"lon\":");
+      out_.latlon(n->lon);
+      out_.lit(",\"lat\":");
+      out_.latlon(n->lat);
+      out_.lit(",\"accuracy\":");
+      out_.b(n->accuracy);
+    } else {
+      out_.lit(",\"accuracy\":");
+      out_.b(n->accuracy);
+      out_.lit(",\"lon\":");
+      out_.i(n->lon);
+      out_.lit(",\"lat\":");
+      out_.i(n->lat);
+    }
+    dims(n->to_bow, n->to_stern, n->to_port, n->to_starboard);
+    out_.lit(",\"epfd\":");
+    out_.u(n->epfd);
+    out_.lit(",\"epfd_text\":\"");
+    out_.raw(epfdText(n->epfd));
+    out_.lit("\",\"second\":");
+    out_.u(n->second);
+    out_.lit(",\"regional\":");
+    out_.u(n->regional);
+    out_.lit(",\"off_position\":");
+    out_.b(n->off_position);
+    out_.lit(",\"raim\":");
+    out_.b(n->raim);
+    out_.lit(",\"virtual_aid\":");
+    out_.b(n->virtual_aid);
+  } else if (t24) {
+    if (merged24) {
+      out_.lit(",\"shipname\":");
+      out_.str(name24.view());
+    } else {
+      out_.lit(",\"part\":\"B\"");
+    }
+    out_.lit(",\"shiptype\":");
+    out_.u(t24->shiptype);
+    out_.lit(",\"shiptype_text\":\"");
+    out_.raw(shipTypeText(t24->shiptype));
+    out_.lit("\",\"vendorid\":");
+    out_.str(t24->vendorid.view());
+    out_.lit(",\"model\":");
+    out_.u(t24->model);
+    out_.lit(",\"serial\":");
+    out_.u(t24->serial);
+    out_.lit(",\"callsign\":");
+    out_.str(t24->callsign.view());
+    if (m.mmsi / 10000000u == 98u) {
+      out_.lit(",\"mothership_mmsi\":");
+      out_.u(t24->mothership_mmsi);
+    } else {
+      dims(t24->to_bow, t24->to_stern, t24->to_port, t24->to_starboard);
+    }
+  } else if (const auto* l = std::get_if<LongRangeReport>(&m.body)) {
+    out_.lit(",\"status\":");
+    if (sc) {
+      out_.lit("\"");
+      out_.raw(navStatusText(l->status));
+      out_.lit("\"");
+    } else {
+      out_.u(l->status);
+    }
+    out_.lit(",\"accuracy\":");
+    out_.b(l->accuracy);
+    out_.lit(",\"lon\":");
+    sc ? out_.printf1("%.1f", l->lon / 600.0) : out_.i(l->lon);
+    out_.lit(",\"lat\":");
+    sc ? out_.printf1("%.1f", l->lat / 600.0) : out_.i(l->lat);
+    out_.lit(",\"speed\":");
+    out_.u(l->speed);
+    out_.lit(",\"course\":");
+    out_.u(l->course);
+    out_.lit(",\"raim\":");
+    out_.b(l->raim);
+    out_.lit(",\"gnss\":");
+    out_.b(l->gnss);
+  }
+  out_.lit("}\r\n");
+  ++stats_.printed;
+}
+
+void App::finish(const char* prog) {
+  out_.flush();
+  std::fflush(stdout);
+  const ais::Counters& c = decoder_.counters();
+  std::string s;
+  char tmp[128];
+  auto add = [&s, &tmp](const char* what, std::uint64_t n) {
+    if (n == 0)
+      return;
+    std::snprintf(tmp, sizeof(tmp), "%s%s %llu", s.empty() ? "" : ", ", what,
+                  static_cast<unsigned long long>(n));
+    s += tmp;
+  };
+  std::uint64_t rejected = stats_.garbage;
+  for (auto n : stats_.reject)
+    rejected += n;
+  std::snprintf(
+      tmp, sizeof(tmp), "%s: %llu lines, %llu sentences (%llu not AIS), %llu messages printed, %llu rejected",
+      prog, static_cast<unsigned long long>(stats_.lines), static_cast<unsigned long long>(stats_.sentences),
+      static_cast<unsigned long long>(stats_.other_sentences),
+      static_cast<unsigned long long>(stats_.printed), static_cast<unsigned long long>(rejected));
+  std::string line = tmp;
+  add("garbage", stats_.garbage);
+  for (int r = 1; r < static_cast<int>(nmea::Reject::kCount); ++r)
+    add(nmea::rejectText(static_cast<nmea::Reject>(r)), stats_.reject[r]);
+  add("orphan fragments", c.orphans);
+  add("out-of-order fragments", c.out_of_order);
+  add("restarted messages", c.restarted);
+  add("timed-out messages", c.timeouts);
+  add("evicted messages", c.evicted);
+  add("bad AIVDM fields", c.bad_fields);
+  add("bad fill bits", c.bad_fill);
+  add("bad armour", c.bad_armour);
+  add("empty payloads", c.empty_payload);
+  add("too short", c.too_short);
+  add("bad type 24 part", c.bad_part);
+  add("unsupported types", c.unsupported);
+  const std::size_t incomplete = decoder_.pendingCount();
+  add("incomplete at end", incomplete);
+  add("type 24A held", stats_.type24_held);
+  if (!s.empty())
+    line += " (" + s + ")";
+  std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+// Splits a file descriptor into lines with one big buffer; a line longer than the buffer is cut
+// (it is rejected as too long anyway).
+bool processFd(int fd, App& app) {
+  std::vector<char> buf(kReadChunk * 2);
+  std::size_t have = 0;
+  for (;;) {
+    const ssize_t got = ::read(fd, buf.data() + have, buf.size() - have);
+    if (got < 0)
+      return false;
+    if (got == 0)
+      break;
+    have += static_cast<std::size_t>(got);
+    std::size_t begin = 0;
+    for (;;) {
+      const void* nl = std::memchr(buf.data() + begin, '\n', have - begin);
+      if (!nl)
+        break;
+      const std::size_t end = static_cast<std::size_t>(static_cast<const char*>(nl) - buf.data());
+      app.processLine(std::string_view(buf.data() + begin, end - begin));
+      begin = end + 1;
+    }
+    if (begin == 0 && have == buf.size()) {  // no newline in a full buffer: cut the line
+      app.processLine(std::string_view(buf.data(), have));
+      have = 0;
+      continue;
+    }
+    std::memmove(buf.data(), buf.data() + begin, have - begin);
+    have -= begin;
+  }
+  if (have > 0)
+    app.processLine(std::string_view(buf.data(), have));
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool unscaled = false;
+  std::vector<const char*> files;
+  bool options_done = false;
+  for (int i = 1; i < argc; ++i) {
+    const char* a = argv[i];
+    if (!options_done && a[0] == '-' && a[1] != '\0') {
+      if (std::strcmp(a, "--") == 0) {
+        options_done = true;
+        continue;
+      }
+      for (const char* p = a + 1; *p; ++p) {
+        if (*p == 'u') {
+          unscaled = true;
+        } else if (*p == 'h') {
+          std::fputs(kUsage, stdout);
+          return 0;
+        } else if (*p == 'j') {
+          // gpsdecode's JSON switch: JSON is the only output here, accepted for drop-in use.
+        } else {
+          std::fprintf(stderr, "asv_ais_decode: unknown option -%c\n%s", *p, kUsage);
+          return 2;
+        }
+      }
+      continue;
+    }
+    files.push_back(a);
+  }
+
+  App app(unscaled);
+  int status = 0;
+  if (files.empty())
+    files.push_back("-");
+  for (const char* f : files) {
+    if (std::strcmp(f, "-") == 0) {
+      app.setDevice("stdin");
+      if (!processFd(0, app))
+        status = 1;
+      continue;
+    }
+    const int fd = ::open(f, O_RDONLY);
+    if (fd < 0) {
+      std::fprintf(stderr, "asv_ais_decode: cannot open %s: %s\n", f, std::strerror(errno));
+      status = 1;
+      continue;
+    }
+    app.setDevice(f);
+    if (!processFd(fd, app)) {
+      std::fprintf(stderr, "asv_ais_decode: read error on %s\n", f);
+      status = 1;
+    }
+    ::close(fd);
+  }
+  app.finish("asv_ais_decode");
+  return status;
+}
