@@ -1,0 +1,423 @@
+#include "asv_sim/sim_node.h"
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <asv_msgs/NmeaSentence.h>
+#include <asv_msgs/SimEvent.h>
+#include <asv_msgs/TargetArray.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <rosgraph_msgs/Clock.h>
+#include <visualization_msgs/MarkerArray.h>
+
+namespace asv_sim {
+
+namespace {
+
+// Stamps are sim time on a fixed epoch, so that two runs of the same scenario record the same stamps.
+constexpr double kEpoch = 1.0e9;  // [s] ROS time of simulation time 0
+
+const std::set<std::string> kKnownParams = {"scenario",
+                                            "seed",
+                                            "rate",
+                                            "publish_clock",
+                                            "odom_rate",
+                                            "ships_rate",
+                                            "emit_topic",
+                                            "emit_udp",
+                                            "udp_host",
+                                            "udp_port",
+                                            "stop_on_collision",
+                                            "shutdown_at_end",
+                                            "start_delay",
+                                            "dt",
+                                            "collision_distance",
+                                            "wind_speed",
+                                            "wind_direction_deg",
+                                            "wave_height",
+                                            "wave_direction_deg",
+                                            "wave_length",
+                                            "give_way_alteration_deg",
+                                            "give_way_tcpa",
+                                            "give_way_dcpa",
+                                            "waypoint_acceptance",
+                                            "ais",
+                                            "radar",
+                                            "radar_range",
+                                            "radar_period",
+                                            "range_noise",
+                                            "bearing_noise_deg",
+                                            "speed_noise_kn",
+                                            "course_noise_deg",
+                                            "radar_dropout",
+                                            "ais_dropout",
+                                            "static_interval"};
+
+template <typename T>
+void get(const ros::NodeHandle& pnh, const std::string& key, T& value) {
+  pnh.param(key, value, value);
+}
+
+geometry_msgs::Quaternion yawQuaternion(double yaw) {
+  geometry_msgs::Quaternion q;
+  q.z = std::sin(yaw / 2.0);
+  q.w = std::cos(yaw / 2.0);
+  return q;
+}
+
+}  // namespace
+
+SimNodeParams loadParams(const ros::NodeHandle& pnh) {
+  std::vector<std::string> names;
+  if (ros::param::getParamNames(names)) {
+    const std::string prefix = pnh.getNamespace() + "/";
+    for (const auto& n : names)
+      if (n.compare(0, prefix.size(), prefix) == 0 && !kKnownParams.count(n.substr(prefix.size())))
+        throw std::invalid_argument("unknown parameter '" + n + "' (see asv_sim/config/sim_node.yaml)");
+  }
+  SimNodeParams p;
+  get(pnh, "scenario", p.scenario);
+  int seed = static_cast<int>(p.seed);
+  get(pnh, "seed", seed);
+  if (seed < 0)
+    throw std::invalid_argument("seed must be >= 0");
+  p.seed = static_cast<uint64_t>(seed);
+  get(pnh, "rate", p.rate);
+  get(pnh, "publish_clock", p.publish_clock);
+  get(pnh, "odom_rate", p.odom_rate);
+  get(pnh, "ships_rate", p.ships_rate);
+  get(pnh, "emit_topic", p.emit_topic);
+  get(pnh, "emit_udp", p.emit_udp);
+  get(pnh, "udp_host", p.udp_host);
+  get(pnh, "udp_port", p.udp_port);
+  get(pnh, "stop_on_collision", p.stop_on_collision);
+  get(pnh, "shutdown_at_end", p.shutdown_at_end);
+  get(pnh, "start_delay", p.start_delay);
+  auto& s = p.sim;
+  get(pnh, "dt", s.dt);
+  get(pnh, "collision_distance", s.collision_distance);
+  get(pnh, "wind_speed", s.environment.wind_speed);
+  double wind_dir = asv::radToDeg(s.environment.wind_direction),
+         wave_dir = asv::radToDeg(s.environment.wave_direction);
+  get(pnh, "wind_direction_deg", wind_dir);
+  get(pnh, "wave_direction_deg", wave_dir);
+  s.environment.wind_direction = asv::degToRad(wind_dir);
+  s.environment.wave_direction = asv::degToRad(wave_dir);
+  get(pnh, "wave_height", s.environment.wave_height);
+  get(pnh, "wave_length", s.environment.wave_length);
+  get(pnh, "give_way_alteration_deg", s.traffic.give_way_alteration_deg);
+  get(pnh, "give_way_tcpa", s.traffic.give_way_tcpa);
+  get(pnh, "give_way_dcpa", s.traffic.give_way_dcpa);
+  get(pnh, "waypoint_acceptance", s.traffic.waypoint_acceptance);
+  auto& e = p.emitter;
+  get(pnh, "ais", e.ais);
+  get(pnh, "radar", e.radar);
+  get(pnh, "radar_range", e.radar_range);
+  get(pnh, "radar_period", e.radar_period);
+  get(pnh, "range_noise", e.range_noise);
+  get(pnh, "bearing_noise_deg", e.bearing_noise_deg);
+  get(pnh, "speed_noise_kn", e.speed_noise_kn);
+  get(pnh, "course_noise_deg", e.course_noise_deg);
+  get(pnh, "radar_dropout", e.radar_dropout);
+  get(pnh, "ais_dropout", e.ais_dropout);
+  get(pnh, "static_interval", e.static_interval);
+  if (p.scenario.empty())
+    throw std::invalid_argument("~scenario (path of a scenario file) is required");
+  if (!(p.rate >= 0.0) || !std::isfinite(p.rate))
+    throw std::invalid_argument("rate must be >= 0 (0: as fast as possible)");
+  if (!(p.odom_rate > 0.0) || !(p.ships_rate > 0.0))
+    throw std::invalid_argument("odom_rate and ships_rate must be > 0 Hz");
+  if (p.udp_port <= 0 || p.udp_port > 65535)
+    throw std::invalid_argument("udp_port must be in 1..65535");
+  s.validate();
+  e.validate();
+  return p;
+}
+
+SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), params_(loadParams(pnh)) {
+  sim_ = std::make_unique<asv::Simulation>(asv::loadScenario(params_.scenario), params_.sim);
+  emitter_ = std::make_unique<asv::NmeaEmitter>(params_.emitter, params_.seed);
+  if (params_.publish_clock)
+    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  nmea_pub_ = nh_.advertise<asv_msgs::NmeaSentence>("sim/nmea", 1000);
+  ships_pub_ = nh_.advertise<asv_msgs::TargetArray>("sim/ships", 10);
+  events_pub_ = nh_.advertise<asv_msgs::SimEvent>("sim/events", 100, true);
+  markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("sim/markers", 2);
+  for (const auto& v : sim_->vessels()) {
+    odom_pubs_.push_back(nh_.advertise<nav_msgs::Odometry>(v.name + "/odom", 50));
+    if (v.own || v.behaviour == asv::Behaviour::Planner) {
+      const std::string ship = v.name;
+      cmd_subs_.push_back(nh_.subscribe<asv_msgs::CourseSpeedSetpoint>(
+          ship + "/cmd", 10,
+          [this, ship](const asv_msgs::CourseSpeedSetpoint::ConstPtr& m) { cmdCallback(ship, m); }));
+    }
+  }
+  if (params_.emit_udp) {
+    udp_fd_ = ::socket(AF_INET, SOCK_DGRAM, 0);
+    if (udp_fd_ < 0)
+      throw std::runtime_error("cannot create a UDP socket");
+  }
+  updater_.setHardwareID("asv_sim");
+  updater_.add("simulation", this, &SimNode::diagnose);
+  ROS_INFO("sim_node: scenario '%s' (%zu ships, %.0f s), rate %s, seed %lu", sim_->scenario().name.c_str(),
+           sim_->vessels().size(), sim_->scenario().duration,
+           params_.rate > 0 ? std::to_string(params_.rate).c_str() : "as fast as possible",
+           static_cast<unsigned long>(params_.seed));
+}
+
+SimNode::~SimNode() {
+  if (udp_fd_ >= 0)
+    ::close(udp_fd_);
+}
+
+void SimNode::cmdCallback(const std::string& ship, const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg) {
+  if (sim_->setSetpoint(ship, msg->course, msg->speed)) {
+    ++cmds_ok_;
+  } else {
+    ++cmds_rejected_;
+    ROS_WARN_THROTTLE(5.0, "sim_node: rejected set-point for '%s' (course %f rad, speed %f m/s)",
+                      ship.c_str(), msg->course, msg->speed);
+  }
+}
+
+void SimNode::publishNmea(const std::vector<std::string>& lines, const ros::Time& stamp, const char* frame) {
+  for (const auto& l : lines) {
+    if (params_.emit_topic) {
+      asv_msgs::NmeaSentence m;
+      m.header.stamp = stamp;
+      m.header.frame_id = frame;
+      m.sentence = l;
+      m.source = "sim";
+      nmea_pub_.publish(m);
+    }
+    if (udp_fd_ >= 0) {
+      sockaddr_in addr{};
+      addr.sin_family = AF_INET;
+      addr.sin_port = htons(static_cast<uint16_t>(params_.udp_port));
+      if (::inet_pton(AF_INET, params_.udp_host.c_str(), &addr.sin_addr) == 1) {
+        const std::string datagram = l + "\r\n";
+        ::sendto(udp_fd_, datagram.data(), datagram.size(), 0, reinterpret_cast<sockaddr*>(&addr),
+                 sizeof addr);
+      }
+    }
+    ++nmea_sent_;
+  }
+}
+
+void SimNode::publishState(bool odom, bool ships) {
+  const ros::Time stamp(kEpoch + sim_->time());
+  const auto& vs = sim_->vessels();
+  asv_msgs::TargetArray arr;
+  visualization_msgs::MarkerArray markers;
+  arr.header.stamp = stamp;
+  arr.header.frame_id = "map";
+  for (size_t i = 0; i < vs.size(); ++i) {
+    const asv::SimVessel& v = vs[i];
+    const asv::VesselState& s = v.state();
+    const double yaw = asv::courseToYaw(s.psi);
+    if (odom) {
+      nav_msgs::Odometry o;
+      o.header.stamp = stamp;
+      o.header.frame_id = "map";
+      o.child_frame_id = v.name + "/base_link";
+      o.pose.pose.position.x = s.x;
+      o.pose.pose.position.y = s.y;
+      o.pose.pose.orientation = yawQuaternion(yaw);
+      // REP 103 body frame: x forward, y left, z up; the core's sway is positive to starboard and its
+      // yaw rate positive clockwise.
+      o.twist.twist.linear.x = s.u;
+      o.twist.twist.linear.y = -s.v;
+      o.twist.twist.angular.z = -s.r;
+      odom_pubs_[i].publish(o);
+      geometry_msgs::TransformStamped t;
+      t.header = o.header;
+      t.child_frame_id = o.child_frame_id;
+      t.transform.translation.x = s.x;
+      t.transform.translation.y = s.y;
+      t.transform.rotation = o.pose.pose.orientation;
+      tf_.sendTransform(t);
+    }
+    if (ships) {
+      asv_msgs::Target t;
+      t.id = v.name;
+      t.mmsi = v.mmsi;
+      t.name = v.name;
+      t.position.x = s.x;
+      t.position.y = s.y;
+      const asv::GeoPoint g = sim_->frame().toGeodetic(v.position());
+      t.has_geodetic = true;
+      t.latitude = g.lat_deg;
+      t.longitude = g.lon_deg;
+      t.course_over_ground = v.cog();
+      t.speed_over_ground = v.sog();
+      const Eigen::Vector2d vel = s.velocity();
+      t.velocity.x = vel.x();
+      t.velocity.y = vel.y();
+      t.has_heading = true;
+      t.heading = s.psi;
+      t.has_rate_of_turn = true;
+      t.rate_of_turn = s.r;
+      t.length = static_cast<float>(v.length);
+      t.beam = static_cast<float>(v.beam);
+      t.stamp = stamp;
+      t.quality = 100;
+      arr.targets.push_back(t);
+      visualization_msgs::Marker m;
+      m.header = arr.header;
+      m.ns = "ships";
+      m.id = static_cast<int>(i);
+      m.type = visualization_msgs::Marker::CUBE;
+      m.pose.position = t.position;
+      m.pose.orientation = yawQuaternion(yaw);
+      // Drawn at least 60 m long so that ships stay visible at scenario scale.
+      const double scale = std::max(1.0, 60.0 / std::max(1.0, v.length));
+      m.scale.x = v.length * scale;
+      m.scale.y = v.beam * scale;
+      m.scale.z = 5.0;
+      m.color.a = v.arrived ? 0.3f : 1.0f;
+      m.color.r = v.own ? 0.1f : 0.6f;
+      m.color.g = v.own ? 0.4f : 0.6f;
+      m.color.b = v.own ? 1.0f : 0.6f;
+      markers.markers.push_back(m);
+      m.ns = "names";
+      m.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+      m.pose.position.y += 120.0;
+      m.scale.z = 80.0;
+      m.text = v.name;
+      m.color.r = m.color.g = m.color.b = 1.0f;
+      markers.markers.push_back(m);
+    }
+  }
+  if (ships) {
+    ships_pub_.publish(arr);
+    markers_pub_.publish(markers);
+  }
+}
+
+void SimNode::publishEvents(size_t from) {
+  const auto& ev = sim_->events();
+  for (size_t i = from; i < ev.size(); ++i) {
+    asv_msgs::SimEvent m;
+    m.header.stamp = ros::Time(kEpoch + ev[i].time);
+    m.header.frame_id = "map";
+    m.type = ev[i].type == asv::SimEvent::Collision  ? asv_msgs::SimEvent::COLLISION
+             : ev[i].type == asv::SimEvent::NearMiss ? asv_msgs::SimEvent::NEAR_MISS
+                                                     : asv_msgs::SimEvent::ARRIVAL;
+    m.ship_a = ev[i].a;
+    m.ship_b = ev[i].b;
+    m.distance = ev[i].distance;
+    events_pub_.publish(m);
+    if (ev[i].type == asv::SimEvent::Collision)
+      ROS_ERROR("sim_node: COLLISION between %s and %s at t = %.1f s", ev[i].a.c_str(), ev[i].b.c_str(),
+                ev[i].time);
+    else
+      ROS_INFO("sim_node: %s %s %s at t = %.1f s (%.0f m)", asv::toString(ev[i].type), ev[i].a.c_str(),
+               ev[i].b.c_str(), ev[i].time, ev[i].distance);
+  }
+}
+
+void SimNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
+  stat.add("sim time [s]", sim_->time());
+  stat.add("real-time factor achieved", achieved_rtf_);
+  stat.add("real-time factor requested", params_.rate);
+  stat.add("set-points accepted", cmds_ok_);
+  stat.add("set-points rejected", cmds_rejected_);
+  stat.add("NMEA sentences sent", nmea_sent_);
+  stat.add("min separation own [m]", sim_->minSeparationOwn());
+  if (sim_->collided())
+    stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "collision");
+  else if (params_.rate > 0.0 && achieved_rtf_ < 0.8 * params_.rate)
+    stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "slower than the requested real-time factor");
+  else
+    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
+}
+
+int SimNode::run() {
+  const ros::WallTime wait_until = ros::WallTime::now() + ros::WallDuration(params_.start_delay);
+  while (ros::ok() && ros::WallTime::now() < wait_until) {
+    if (params_.publish_clock) {
+      rosgraph_msgs::Clock c;
+      c.clock = ros::Time(kEpoch);
+      clock_pub_.publish(c);
+    }
+    publishState(true, true);
+    ros::spinOnce();
+    ros::WallDuration(0.05).sleep();
+  }
+  const double dt = params_.sim.dt;
+  const int odom_every = std::max(1, static_cast<int>(std::lround(1.0 / (params_.odom_rate * dt))));
+  const int ships_every = std::max(1, static_cast<int>(std::lround(1.0 / (params_.ships_rate * dt))));
+  const ros::WallTime wall_start = ros::WallTime::now();
+  ros::WallTime last_diag = wall_start;
+  size_t events_done = 0;
+  long k = 0;
+  std::vector<std::string> ais, ttm;
+  while (ros::ok() && !sim_->finished()) {
+    ais.clear();
+    ttm.clear();
+    emitter_->update(*sim_, ais, ttm);
+    const ros::Time stamp(kEpoch + sim_->time());
+    publishNmea(ais, stamp, "ais");
+    publishNmea(ttm, stamp, "radar");
+    sim_->step();
+    ++k;
+    if (params_.publish_clock) {
+      rosgraph_msgs::Clock c;
+      c.clock = ros::Time(kEpoch + sim_->time());
+      clock_pub_.publish(c);
+    }
+    publishState(k % odom_every == 0, k % ships_every == 0);
+    if (sim_->events().size() > events_done) {
+      publishEvents(events_done);
+      events_done = sim_->events().size();
+      if (params_.stop_on_collision && sim_->collided())
+        break;
+    }
+    ros::spinOnce();
+    const double wall = (ros::WallTime::now() - wall_start).toSec();
+    achieved_rtf_ = wall > 0.0 ? sim_->time() / wall : 0.0;
+    if (params_.rate > 0.0) {
+      const double ahead = sim_->time() / params_.rate - wall;
+      if (ahead > 0.0)
+        ros::WallDuration(ahead).sleep();
+    }
+    if ((ros::WallTime::now() - last_diag).toSec() >= 1.0) {
+      updater_.force_update();
+      last_diag = ros::WallTime::now();
+    }
+  }
+  asv_msgs::SimEvent end;
+  end.header.stamp = ros::Time(kEpoch + sim_->time());
+  end.header.frame_id = "map";
+  end.type = asv_msgs::SimEvent::END;
+  end.distance = sim_->minSeparationOwn();
+  events_pub_.publish(end);
+  ROS_INFO("sim_node: scenario '%s' ended at t = %.1f s: %s, min separation %.0f m, real-time factor %.1f",
+           sim_->scenario().name.c_str(), sim_->time(), sim_->collided() ? "COLLISION" : "no collision",
+           sim_->minSeparationOwn(), achieved_rtf_);
+  if (params_.shutdown_at_end) {
+    // Let the last messages (END event, final state) reach the subscribers before leaving.
+    const ros::WallTime linger = ros::WallTime::now() + ros::WallDuration(1.0);
+    while (ros::ok() && ros::WallTime::now() < linger) {
+      if (params_.publish_clock) {
+        rosgraph_msgs::Clock c;
+        c.clock = ros::Time(kEpoch + sim_->time());
+        clock_pub_.publish(c);
+      }
+      ros::spinOnce();
+      ros::WallDuration(0.05).sleep();
+    }
+    return 0;
+  }
+  ros::spin();
+  return 0;
+}
+
+}  // namespace asv_sim
