@@ -1,0 +1,52 @@
+// The plugins are thin adapters: each wraps one asv_core PlannerAlgorithm.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+
+#include "asv_planning/planner_plugin.h"
+
+namespace asv_planning {
+
+class AlgorithmPlugin : public PlannerPlugin {
+public:
+  void initialize(const std::string& name, const asv::ParamMap& config) override;
+  asv::Plan makePlan(const asv::PlanningProblem& problem) override;
+  std::string name() const override { return name_; }
+  asv::PlannerAlgorithm* algorithm() { return algorithm_.get(); }
+
+protected:
+  // `defaults`: the plugin's sea-scale defaults where the algorithm's own follow its paper's units;
+  // keys given to initialize() override them.
+  explicit AlgorithmPlugin(std::unique_ptr<asv::PlannerAlgorithm> algorithm, asv::ParamMap defaults = {})
+      : algorithm_(std::move(algorithm)), defaults_(std::move(defaults)) {}
+
+private:
+  asv::ParamMap defaults_;
+  std::unique_ptr<asv::PlannerAlgorithm> algorithm_;
+  std::string name_;
+  bool initialized_ = false;
+};
+
+class AcoPlugin : public AlgorithmPlugin {
+public:
+  AcoPlugin();
+};
+class DssaPlugin : public AlgorithmPlugin {
+public:
+  DssaPlugin();
+};
+class DssaPlusPlugin : public AlgorithmPlugin {
+public:
+  DssaPlusPlugin();
+};
+class MopsoPlugin : public AlgorithmPlugin {
+public:
+  MopsoPlugin();
+};
+class GaPlugin : public AlgorithmPlugin {
+public:
+  GaPlugin();
+};
+
+}  // namespace asv_planning

@@ -1,0 +1,93 @@
+// planner_node: hosts one planner plugin for one ship.
+//
+// Subscribes: odom (nav_msgs/Odometry, own ship), risk (asv_msgs/RiskAssessment), targets
+//   (asv_msgs/TargetArray), goal (geometry_msgs/PoseStamped, optional: replaces the configured goal)
+// Publishes: plan (asv_msgs/Plan), path (nav_msgs/Path), cmd (asv_msgs/CourseSpeedSetpoint),
+//   plan_markers (visualization_msgs/MarkerArray), /diagnostics
+// Parameters: config/planner_node.yaml; the plugin's own under ~<planner>/ (config/<planner>.yaml).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <asv_core/planning.h>
+#include <asv_msgs/RiskAssessment.h>
+#include <asv_msgs/TargetArray.h>
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+
+#include "asv_planning/plugin_loader.h"
+
+namespace asv_planning {
+
+struct PlannerNodeParams {
+  std::string planner = "aco";  // plugin short name
+  std::string ship = "own";     // ship this node plans for (frames, plan.ship)
+  std::string frame_id = "map";
+  std::string scenario;  // optional scenario file: goal, static obstacles, planner_params
+  bool has_goal = false;
+  Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // [m] goal_x, goal_y
+  double cruise_speed = 0.0;                       // [m/s] 0: the speed the ship has when the node starts
+  double replan_period = 30.0;                     // [s] replan at least this often
+  double min_replan_interval = 2.0;                // [s] never replan faster than this
+  double time_budget = 0.5;                        // [s] wall time a plugin may use per plan
+  double setpoint_rate = 1.0;                      // [Hz] set-points are re-sent this often
+  double waypoint_acceptance = 150.0;              // [m] next plan waypoint once within this radius
+  double fallback_speed_factor = 0.5;              // fallback: hold course at this fraction of the speed
+  double extremis_range = 926.0;       // [m] fallback: hard starboard when an urgent target is this close
+  double stale_after = 10.0;           // [s] risk/targets older than this are ignored
+  double plan_clearance = 370.4;       // [m] replan when the rest of the plan would pass a target closer
+  double prediction_horizon = 1200.0;  // [s] how far ahead the plan is checked
+  int seed = 1;
+  asv::OwnShipLimits limits;
+};
+
+class PlannerNode {
+public:
+  PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+private:
+  void odomCallback(const nav_msgs::Odometry::ConstPtr& msg);
+  void riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg);
+  void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
+  void goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg);
+  void timerCallback(const ros::TimerEvent&);
+  bool replanNeeded(std::string& why);
+  double predictedClearance() const;
+  void replan(const std::string& why);
+  asv::PlanningProblem buildProblem() const;
+  asv::Plan fallback(const std::string& why) const;
+  void publishPlan();
+  void publishSetpoint();
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
+
+  ros::NodeHandle nh_, pnh_;
+  PlannerNodeParams params_;
+  PluginLoader loader_;
+  pluginlib::UniquePtr<PlannerPlugin> plugin_;
+  std::vector<asv::StaticObstacle> obstacles_;
+  ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_;
+  ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_;
+  ros::Timer timer_;
+  diagnostic_updater::Updater updater_;
+
+  std::optional<asv::ShipState> own_;
+  asv_msgs::RiskAssessment::ConstPtr risk_;
+  asv_msgs::TargetArray::ConstPtr targets_;
+  std::map<std::string, uint8_t> known_levels_;  // risk level per target at the last plan
+  asv::Plan plan_;
+  bool have_plan_ = false;
+  size_t wp_index_ = 1;
+  ros::Time last_plan_time_;
+  ros::Time plan_stamp_;
+  double course_sp_ = 0.0, speed_sp_ = 0.0;
+  uint64_t replans_ = 0, fallbacks_ = 0, overruns_ = 0, seq_ = 0;
+  double last_compute_ = 0.0, max_compute_ = 0.0;
+  std::string last_reason_;
+};
+
+}  // namespace asv_planning

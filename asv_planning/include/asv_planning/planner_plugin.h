@@ -1,0 +1,28 @@
+// The planner plugin interface (nav_core's shape): pure virtual, protected constructor, two-step
+// initialisation. Configuration is a plain key/value tree (asv::ParamMap) so that the same plugin
+// loads through pluginlib in planner_node (from rosparam) and in asv_batch (from YAML, no master).
+#pragma once
+
+#include <string>
+
+#include <asv_core/param_map.h>
+#include <asv_core/planning.h>
+
+namespace asv_planning {
+
+class PlannerPlugin {
+public:
+  virtual ~PlannerPlugin() = default;
+  // Second step of the construction: `name` is the plugin's short name (aco, ga, ...), `config` its
+  // parameters (keys documented in config/<name>.yaml). Throws std::invalid_argument on a bad or
+  // unknown key.
+  virtual void initialize(const std::string& name, const asv::ParamMap& config) = 0;
+  // Plans for the problem within problem.time_budget; never throws on a feasible problem.
+  virtual asv::Plan makePlan(const asv::PlanningProblem& problem) = 0;
+  virtual std::string name() const = 0;
+
+protected:
+  PlannerPlugin() = default;
+};
+
+}  // namespace asv_planning

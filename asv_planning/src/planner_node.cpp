@@ -1,0 +1,480 @@
+#include "asv_planning/planner_node.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include <asv_core/scenario.h>
+#include <asv_msgs/CourseSpeedSetpoint.h>
+#include <asv_msgs/Plan.h>
+#include <nav_msgs/Path.h>
+#include <tf2/utils.h>
+#include <visualization_msgs/MarkerArray.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+
+namespace asv_planning {
+
+namespace {
+
+const std::set<std::string> kKnownParams = {"planner",
+                                            "ship",
+                                            "frame_id",
+                                            "scenario",
+                                            "goal_x",
+                                            "goal_y",
+                                            "cruise_speed",
+                                            "replan_period",
+                                            "min_replan_interval",
+                                            "time_budget",
+                                            "setpoint_rate",
+                                            "waypoint_acceptance",
+                                            "fallback_speed_factor",
+                                            "extremis_range",
+                                            "plan_clearance",
+                                            "prediction_horizon",
+                                            "stale_after",
+                                            "seed",
+                                            "max_speed",
+                                            "min_speed",
+                                            "turn_rate",
+                                            "turn_delay"};
+
+// Flattens a rosparam tree into "a/b" keys with text values.
+void flatten(const XmlRpc::XmlRpcValue& v, const std::string& prefix, asv::ParamMap& out) {
+  switch (v.getType()) {
+    case XmlRpc::XmlRpcValue::TypeStruct:
+      for (auto it = v.begin(); it != v.end(); ++it)
+        flatten(it->second, prefix.empty() ? it->first : prefix + "/" + it->first, out);
+      break;
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      out.set(prefix, static_cast<bool>(const_cast<XmlRpc::XmlRpcValue&>(v)) ? "true" : "false");
+      break;
+    case XmlRpc::XmlRpcValue::TypeInt:
+      out.set(prefix, std::to_string(static_cast<int>(const_cast<XmlRpc::XmlRpcValue&>(v))));
+      break;
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      out.set(prefix, static_cast<double>(const_cast<XmlRpc::XmlRpcValue&>(v)));
+      break;
+    case XmlRpc::XmlRpcValue::TypeString:
+      out.set(prefix, static_cast<std::string>(const_cast<XmlRpc::XmlRpcValue&>(v)));
+      break;
+    default:
+      throw std::invalid_argument("parameter '" + prefix + "': lists are not planner parameters");
+  }
+}
+
+template <typename T>
+void get(const ros::NodeHandle& pnh, const std::string& key, T& value) {
+  pnh.param(key, value, value);
+}
+
+}  // namespace
+
+PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh) {
+  PlannerNodeParams& p = params_;
+  get(pnh, "planner", p.planner);
+  get(pnh, "ship", p.ship);
+  get(pnh, "frame_id", p.frame_id);
+  get(pnh, "scenario", p.scenario);
+  get(pnh, "cruise_speed", p.cruise_speed);
+  get(pnh, "replan_period", p.replan_period);
+  get(pnh, "min_replan_interval", p.min_replan_interval);
+  get(pnh, "time_budget", p.time_budget);
+  get(pnh, "setpoint_rate", p.setpoint_rate);
+  get(pnh, "waypoint_acceptance", p.waypoint_acceptance);
+  get(pnh, "fallback_speed_factor", p.fallback_speed_factor);
+  get(pnh, "extremis_range", p.extremis_range);
+  get(pnh, "stale_after", p.stale_after);
+  get(pnh, "plan_clearance", p.plan_clearance);
+  get(pnh, "prediction_horizon", p.prediction_horizon);
+  get(pnh, "seed", p.seed);
+  get(pnh, "max_speed", p.limits.max_speed);
+  get(pnh, "min_speed", p.limits.min_speed);
+  get(pnh, "turn_rate", p.limits.turn_rate);
+  get(pnh, "turn_delay", p.limits.turn_delay);
+  if (pnh.hasParam("goal_x") || pnh.hasParam("goal_y")) {
+    if (!pnh.getParam("goal_x", p.goal.x()) || !pnh.getParam("goal_y", p.goal.y()))
+      throw std::invalid_argument("give both goal_x and goal_y (metres, map frame)");
+    p.has_goal = true;
+  }
+  if (!(p.replan_period > 0 && p.min_replan_interval >= 0 && p.time_budget > 0 && p.setpoint_rate > 0 &&
+        p.waypoint_acceptance > 0 && p.fallback_speed_factor >= 0 && p.fallback_speed_factor <= 1 &&
+        p.extremis_range >= 0 && p.stale_after > 0 && p.limits.max_speed > 0))
+    throw std::invalid_argument("planner_node: a parameter is out of range (see config/planner_node.yaml)");
+
+  // Unknown private keys are typos, except the plugin's own subtree.
+  std::vector<std::string> names;
+  asv::ParamMap plugin_params;
+  if (ros::param::getParamNames(names)) {
+    const std::string prefix = pnh.getNamespace() + "/";
+    for (const auto& n : names) {
+      if (n.compare(0, prefix.size(), prefix) != 0)
+        continue;
+      const std::string key = n.substr(prefix.size());
+      if (key.compare(0, p.planner.size() + 1, p.planner + "/") == 0)
+        continue;
+      if (!kKnownParams.count(key))
+        throw std::invalid_argument("unknown parameter '" + n +
+                                    "' (see asv_planning/config/planner_node.yaml)");
+    }
+  }
+  if (!p.scenario.empty()) {
+    const asv::Scenario sc = asv::loadScenario(p.scenario);
+    obstacles_ = sc.obstacles;
+    const asv::ScenarioShip* ship = sc.own.name == p.ship ? &sc.own : nullptr;
+    for (const auto& t : sc.targets)
+      if (t.name == p.ship)
+        ship = &t;
+    if (!ship)
+      throw std::invalid_argument("ship '" + p.ship + "' is not in scenario " + p.scenario);
+    if (!p.has_goal && ship->goal) {
+      p.goal = *ship->goal;
+      p.has_goal = true;
+    }
+    if (p.cruise_speed <= 0.0)
+      p.cruise_speed = ship->speed;
+    plugin_params = sc.planner_params.sub(p.planner);
+  }
+  XmlRpc::XmlRpcValue tree;
+  if (pnh.getParam(p.planner, tree))
+    flatten(tree, "", plugin_params);
+  plugin_ = loader_.load(p.planner, plugin_params);
+
+  odom_sub_ = nh_.subscribe("odom", 10, &PlannerNode::odomCallback, this);
+  risk_sub_ = nh_.subscribe("risk", 10, &PlannerNode::riskCallback, this);
+  targets_sub_ = nh_.subscribe("targets", 10, &PlannerNode::targetsCallback, this);
+  goal_sub_ = nh_.subscribe("goal", 1, &PlannerNode::goalCallback, this);
+  plan_pub_ = nh_.advertise<asv_msgs::Plan>("plan", 5, true);
+  path_pub_ = nh_.advertise<nav_msgs::Path>("path", 5, true);
+  cmd_pub_ = nh_.advertise<asv_msgs::CourseSpeedSetpoint>("cmd", 5);
+  markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("plan_markers", 2, true);
+  timer_ = nh_.createTimer(ros::Duration(1.0 / p.setpoint_rate), &PlannerNode::timerCallback, this);
+  updater_.setHardwareID(p.ship);
+  updater_.add("planner", this, &PlannerNode::diagnose);
+  ROS_INFO("planner_node: ship '%s', planner '%s', goal %s, budget %.2f s", p.ship.c_str(), p.planner.c_str(),
+           p.has_goal ? "set" : "none", p.time_budget);
+}
+
+void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
+  const auto& q = msg->pose.pose.orientation;
+  const auto& v = msg->twist.twist.linear;
+  if (!asv::allFinite({msg->pose.pose.position.x, msg->pose.pose.position.y, q.x, q.y, q.z, q.w, v.x, v.y})) {
+    ROS_WARN_THROTTLE(5.0, "planner_node: non-finite odometry ignored");
+    return;
+  }
+  const double yaw = tf2::getYaw(q);
+  const double ve = v.x * std::cos(yaw) - v.y * std::sin(yaw), vn = v.x * std::sin(yaw) + v.y * std::cos(yaw);
+  asv::ShipState s;
+  s.id = params_.ship;
+  s.position = {msg->pose.pose.position.x, msg->pose.pose.position.y};
+  s.heading = asv::yawToCourse(yaw);
+  s.speed = std::hypot(ve, vn);
+  s.course = s.speed > 0.01 ? asv::courseOf({ve, vn}) : s.heading;
+  if (!own_ && params_.cruise_speed <= 0.0)
+    params_.cruise_speed = std::max(0.5, s.speed);
+  own_ = s;
+}
+
+void PlannerNode::riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg) {
+  risk_ = msg;
+}
+void PlannerNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
+  targets_ = msg;
+}
+
+void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) {
+  if (!std::isfinite(msg->pose.position.x) || !std::isfinite(msg->pose.position.y))
+    return;
+  params_.goal = {msg->pose.position.x, msg->pose.position.y};
+  params_.has_goal = true;
+  have_plan_ = false;  // replan towards the new goal
+}
+
+asv::PlanningProblem PlannerNode::buildProblem() const {
+  asv::PlanningProblem pr;
+  pr.time = ros::Time::now().toSec();
+  pr.own = *own_;
+  pr.own.speed = std::max(pr.own.speed, params_.cruise_speed);  // plan for the cruising speed
+  pr.limits = params_.limits;
+  pr.goal =
+      params_.has_goal ? params_.goal : own_->position + asv::courseSpeedToVelocity(own_->course, 20000.0);
+  pr.obstacles = obstacles_;
+  pr.seed = static_cast<uint64_t>(params_.seed) + replans_;
+  pr.time_budget = params_.time_budget;
+  const ros::Time now = ros::Time::now();
+  std::map<std::string, const asv_msgs::TargetRisk*> risk_by_id;
+  if (risk_ && (now - risk_->header.stamp).toSec() < params_.stale_after)
+    for (const auto& r : risk_->targets)
+      risk_by_id[r.target_id] = &r;
+  if (targets_ && (now - targets_->header.stamp).toSec() < params_.stale_after) {
+    for (const auto& t : targets_->targets) {
+      if (t.id == params_.ship ||
+          !asv::allFinite({t.position.x, t.position.y, t.course_over_ground, t.speed_over_ground}))
+        continue;
+      asv::PlannerTarget pt;
+      pt.state.id = t.id;
+      pt.state.position = {t.position.x, t.position.y};
+      pt.state.course = t.course_over_ground;
+      pt.state.speed = t.speed_over_ground;
+      pt.state.heading = t.has_heading ? t.heading : t.course_over_ground;
+      pt.state.length = t.length;
+      auto it = risk_by_id.find(t.id);
+      if (it != risk_by_id.end()) {
+        const asv_msgs::TargetRisk& r = *it->second;
+        pt.risk = static_cast<asv::RiskLevel>(r.risk_level);
+        pt.compliant = r.compliant;
+        pt.encounter = static_cast<asv::Encounter>(r.encounter);
+        pt.role = static_cast<asv::OwnRole>(r.own_role);
+        pt.cri = r.cri;
+        pt.tcpa = r.tcpa;
+        pt.dcpa = r.dcpa;
+      }
+      pr.targets.push_back(pt);
+    }
+  }
+  return pr;
+}
+
+asv::Plan PlannerNode::fallback(const std::string& why) const {
+  asv::Plan f;
+  f.status = asv::PlanStatus::Fallback;
+  f.course_setpoint = own_->course;
+  f.speed_setpoint = params_.cruise_speed * params_.fallback_speed_factor;
+  f.message = "fallback (" + why + "): hold course, slow to " +
+              std::to_string(params_.fallback_speed_factor) + " of speed";
+  if (risk_)
+    for (const auto& r : risk_->targets)
+      if (r.risk_level == asv_msgs::TargetRisk::RISK_URGENT && r.range < params_.extremis_range) {
+        // In extremis (Rule 17(b), Rule 2(b)): hard to starboard at full speed.
+        f.course_setpoint = asv::wrapTwoPi(own_->course + asv::kPi / 2);
+        f.speed_setpoint = params_.cruise_speed;
+        f.message = "fallback (" + why + "): in extremis with " + r.target_id + ", hard starboard";
+        break;
+      }
+  return f;
+}
+
+double PlannerNode::predictedClearance() const {
+  // The rest of the current plan flown at its speed from where the ship is now, against every target
+  // holding its course and speed: the smallest distance over the next `prediction_horizon`.
+  if (!own_ || !targets_)
+    return 1e12;
+  std::vector<Eigen::Vector2d> route{own_->position};
+  for (size_t i = wp_index_; i < plan_.waypoints.size(); ++i)
+    route.push_back(plan_.waypoints[i].position);
+  if (plan_.waypoints.size() < 2 || plan_.status == asv::PlanStatus::Fallback)
+    route.push_back(own_->position + asv::courseSpeedToVelocity(course_sp_, 1e5));
+  const double speed = std::max(0.1, speed_sp_ > 0.0 ? speed_sp_ : params_.cruise_speed);
+  const double dt = 5.0;
+  double best = 1e12;
+  size_t leg = 1;
+  Eigen::Vector2d p = route[0];
+  for (double t = 0.0; t <= params_.prediction_horizon && leg < route.size(); t += dt) {
+    for (const auto& tg : targets_->targets) {
+      if (tg.id == params_.ship)
+        continue;
+      const Eigen::Vector2d q(tg.position.x + tg.velocity.x * t, tg.position.y + tg.velocity.y * t);
+      best = std::min(best, (q - p).norm());
+    }
+    double step = speed * dt;
+    while (step > 0.0 && leg < route.size()) {
+      const Eigen::Vector2d d = route[leg] - p;
+      if (d.norm() <= step) {
+        step -= d.norm();
+        p = route[leg++];
+      } else {
+        p += d.normalized() * step;
+        step = 0.0;
+      }
+    }
+  }
+  return best;
+}
+
+bool PlannerNode::replanNeeded(std::string& why) {
+  const ros::Time now = ros::Time::now();
+  if (!have_plan_)
+    return why = "first plan", true;
+  const double since = (now - last_plan_time_).toSec();
+  if (since < params_.min_replan_interval)
+    return false;
+  if (risk_) {
+    for (const auto& r : risk_->targets) {
+      auto it = known_levels_.find(r.target_id);
+      if (r.risk_level == 0 && it != known_levels_.end()) {
+        known_levels_.erase(it);  // the risk has cleared: a new one later is news again
+        continue;
+      }
+      const uint8_t before = it == known_levels_.end() ? 0 : it->second;
+      // Only rises replan: a level that falls (or flickers with sensor noise round a threshold) would
+      // make the ship dither between plans instead of committing to one.
+      if (r.risk_level > before) {
+        why = "risk of " + r.target_id + " " + std::to_string(before) + " -> " + std::to_string(r.risk_level);
+        return true;
+      }
+    }
+  }
+  // A plan is kept while it stays safe: the rest of it, flown from here, must keep every target beyond
+  // plan_clearance. Periodic replanning of a safe plan would only make the ship weave.
+  const double clearance = predictedClearance();
+  if (clearance < params_.plan_clearance) {
+    why = "plan predicted to pass within " + std::to_string(static_cast<int>(clearance)) + " m";
+    return true;
+  }
+  if (since >= params_.replan_period && plan_.status != asv::PlanStatus::Ok)
+    return why = "periodic (last plan not ok)", true;
+  return false;
+}
+
+void PlannerNode::replan(const std::string& why) {
+  const asv::PlanningProblem pr = buildProblem();
+  const ros::WallTime start = ros::WallTime::now();
+  asv::Plan plan;
+  try {
+    plan = plugin_->makePlan(pr);
+  } catch (const std::exception& e) {
+    ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), e.what());
+    plan = fallback(std::string("plugin error: ") + e.what());
+  }
+  last_compute_ = (ros::WallTime::now() - start).toSec();
+  max_compute_ = std::max(max_compute_, last_compute_);
+  plan.compute_time = last_compute_;
+  if (last_compute_ > 1.5 * params_.time_budget) {
+    ++overruns_;
+    ROS_WARN_THROTTLE(5.0, "planner_node: '%s' took %.3f s (budget %.3f s)", params_.planner.c_str(),
+                      last_compute_, params_.time_budget);
+  }
+  if (plan.status == asv::PlanStatus::NoSolution)
+    plan = fallback("no solution: " + plan.message);
+  if (plan.status == asv::PlanStatus::Fallback)
+    ++fallbacks_;
+  plan_ = plan;
+  have_plan_ = true;
+  wp_index_ = 1;
+  last_plan_time_ = ros::Time::now();
+  plan_stamp_ = last_plan_time_;
+  ++replans_;
+  last_reason_ = why;
+  if (risk_)
+    for (const auto& r : risk_->targets) {
+      uint8_t& known = known_levels_[r.target_id];
+      known = std::max(known, r.risk_level);
+    }
+  ROS_INFO("planner_node: %s plan (%s) in %.1f ms: course %.1f deg, speed %.1f kn, %zu waypoints: %s",
+           asv::toString(plan.status), why.c_str(), last_compute_ * 1e3, asv::radToDeg(plan.course_setpoint),
+           asv::mpsToKnots(plan.speed_setpoint), plan.waypoints.size(), plan.message.c_str());
+  publishPlan();
+}
+
+void PlannerNode::publishPlan() {
+  asv_msgs::Plan m;
+  m.header.stamp = plan_stamp_;
+  m.header.frame_id = params_.frame_id;
+  m.ship = params_.ship;
+  m.planner = params_.planner;
+  m.status = static_cast<uint8_t>(plan_.status);
+  nav_msgs::Path path;
+  path.header = m.header;
+  visualization_msgs::MarkerArray markers;
+  visualization_msgs::Marker line;
+  line.header = m.header;
+  line.ns = params_.ship + "/plan";
+  line.type = visualization_msgs::Marker::LINE_STRIP;
+  line.pose.orientation.w = 1.0;
+  line.scale.x = 15.0;
+  line.color.a = 1.0;
+  line.color.g = plan_.status == asv::PlanStatus::Ok ? 1.0f : 0.3f;
+  line.color.r = plan_.status == asv::PlanStatus::Ok ? 0.2f : 1.0f;
+  for (const auto& w : plan_.waypoints) {
+    asv_msgs::PlanWaypoint pw;
+    pw.position.x = w.position.x();
+    pw.position.y = w.position.y();
+    pw.time = w.time;
+    pw.course = w.course;
+    pw.speed = w.speed;
+    m.waypoints.push_back(pw);
+    geometry_msgs::PoseStamped ps;
+    ps.header = m.header;
+    ps.header.stamp = plan_stamp_ + ros::Duration(std::max(0.0, w.time));
+    ps.pose.position = pw.position;
+    const double yaw = asv::courseToYaw(w.course);
+    ps.pose.orientation.z = std::sin(yaw / 2);
+    ps.pose.orientation.w = std::cos(yaw / 2);
+    path.poses.push_back(ps);
+    line.points.push_back(pw.position);
+  }
+  m.course_setpoint = plan_.course_setpoint;
+  m.speed_setpoint = plan_.speed_setpoint;
+  m.cost = std::isfinite(plan_.cost) ? plan_.cost : 0.0;
+  m.compute_time = plan_.compute_time;
+  m.message = plan_.message;
+  plan_pub_.publish(m);
+  path_pub_.publish(path);
+  if (line.points.size() >= 2)
+    markers.markers.push_back(line);
+  markers_pub_.publish(markers);
+}
+
+void PlannerNode::publishSetpoint() {
+  if (!have_plan_ || !own_)
+    return;
+  const Eigen::Vector2d p = own_->position;
+  double course = plan_.course_setpoint, speed = plan_.speed_setpoint;
+  const auto& wps = plan_.waypoints;
+  if (plan_.status != asv::PlanStatus::Fallback && wps.size() >= 2) {
+    while (wp_index_ < wps.size() && (wps[wp_index_].position - p).norm() < params_.waypoint_acceptance)
+      ++wp_index_;
+    if (wp_index_ < wps.size()) {
+      course = asv::courseOf(wps[wp_index_].position - p);
+      if (wps[wp_index_].speed > 0.0)
+        speed = wps[wp_index_].speed;
+    } else if (params_.has_goal) {
+      course = asv::courseOf(params_.goal - p);  // past the plan: back to the goal
+    }
+  }
+  if (!(speed > 0.0) && plan_.status != asv::PlanStatus::Fallback)
+    speed = params_.cruise_speed;
+  if (!std::isfinite(course) || !std::isfinite(speed))
+    return;
+  course_sp_ = asv::wrapTwoPi(course);
+  speed_sp_ = std::clamp(speed, 0.0, params_.limits.max_speed);
+  asv_msgs::CourseSpeedSetpoint sp;
+  sp.header.stamp = ros::Time::now();
+  sp.header.frame_id = params_.frame_id;
+  sp.course = course_sp_;
+  sp.speed = speed_sp_;
+  cmd_pub_.publish(sp);
+}
+
+void PlannerNode::timerCallback(const ros::TimerEvent&) {
+  if (!own_) {
+    ROS_WARN_THROTTLE(10.0, "planner_node: waiting for odometry on %s", odom_sub_.getTopic().c_str());
+    return;
+  }
+  std::string why;
+  if (replanNeeded(why))
+    replan(why);
+  publishSetpoint();
+  updater_.update();
+}
+
+void PlannerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
+  stat.add("planner", params_.planner);
+  stat.add("replans", replans_);
+  stat.add("fallbacks", fallbacks_);
+  stat.add("budget overruns", overruns_);
+  stat.add("last compute time [s]", last_compute_);
+  stat.add("max compute time [s]", max_compute_);
+  stat.add("last replan reason", last_reason_);
+  stat.add("course set-point [deg]", asv::radToDeg(course_sp_));
+  stat.add("speed set-point [m/s]", speed_sp_);
+  if (have_plan_ && plan_.status == asv::PlanStatus::Fallback)
+    stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "fallback: " + plan_.message);
+  else if (overruns_ > 0)
+    stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "plugin overran its time budget");
+  else
+    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, have_plan_ ? "planning" : "waiting");
+}
+
+}  // namespace asv_planning

@@ -1,0 +1,88 @@
+// The five planners load by short name through pluginlib (no master), plan a head-on encounter, and
+// a bad name or key fails loudly.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include <asv_core/units.h>
+
+#include "asv_planning/plugin_loader.h"
+
+using namespace asv_planning;
+
+namespace {
+asv::PlanningProblem headOn() {
+  asv::PlanningProblem p;
+  p.own.id = "own";
+  p.own.speed = asv::knotsToMps(10.0);
+  p.goal = {0.0, 12 * 1852.0};
+  p.limits.max_speed = 8.0;
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.state.position = {0.0, 3 * 1852.0};
+  t.state.course = t.state.heading = asv::kPi;
+  t.state.speed = asv::knotsToMps(10.0);
+  t.risk = asv::RiskLevel::Collision;
+  t.encounter = asv::Encounter::HeadOn;
+  t.role = asv::OwnRole::BothGiveWay;
+  t.tcpa = 3 * 1852.0 / (2 * t.state.speed);
+  t.cri = 0.9;
+  p.targets.push_back(t);
+  return p;
+}
+}  // namespace
+
+TEST(PluginLoader, DeclaresTheFivePlanners) {
+  PluginLoader loader;
+  auto d = loader.declared();
+  for (const char* n : {"asv_planning/aco", "asv_planning/dssa", "asv_planning/dssa_plus",
+                        "asv_planning/mopso", "asv_planning/ga"})
+    EXPECT_NE(std::find(d.begin(), d.end(), n), d.end()) << n;
+}
+
+TEST(PluginLoader, EachPlannerLoadsByShortNameAndAltersToStarboardHeadOn) {
+  PluginLoader loader;
+  for (const char* n : {"aco", "dssa", "dssa_plus", "mopso", "ga"}) {
+    auto plugin = loader.load(n, asv::ParamMap());
+    ASSERT_TRUE(plugin) << n;
+    EXPECT_EQ(plugin->name(), n);
+    const asv::Plan plan = plugin->makePlan(headOn());
+    EXPECT_EQ(plan.status, asv::PlanStatus::Ok) << n << ": " << plan.message;
+    // Northbound own ship: a starboard alteration takes the planned track east of the meeting line (the
+    // set-point course is then between 000 and 180).
+    double east = 0.0, west = 0.0;
+    for (const auto& w : plan.waypoints) {
+      if (w.position.y() > 1.5 * 1852.0)
+        break;  // beyond the meeting point
+      east = std::max(east, w.position.x());
+      west = std::min(west, w.position.x());
+    }
+    const double sp = asv::radToDeg(asv::wrapPi(plan.course_setpoint));
+    // DSSA has no COLREGs rule (it minimises collision risk and inefficiency only): it must alter,
+    // to either side.
+    const bool colregs = std::string(n).rfind("dssa", 0) != 0;
+    if (colregs)
+      EXPECT_TRUE(east > -west || (sp > 0.0 && sp < 180.0))
+          << n << " east " << east << " west " << west << " set-point " << sp;
+    EXPECT_GT(std::max(east, -west) + std::fabs(sp), 1.0) << n << " did not alter at all";
+  }
+}
+
+TEST(PluginLoader, UnknownPlannerListsTheDeclaredOnes) {
+  PluginLoader loader;
+  try {
+    loader.load("astar", asv::ParamMap());
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("astar"), std::string::npos);
+    EXPECT_NE(what.find("asv_planning/mopso"), std::string::npos) << what;
+  }
+}
+
+TEST(PluginLoader, UnknownParameterIsRejected) {
+  PluginLoader loader;
+  asv::ParamMap p;
+  p.set("antz", "10");
+  EXPECT_THROW(loader.load("aco", p), std::invalid_argument);
+}

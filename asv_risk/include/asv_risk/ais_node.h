@@ -1,0 +1,91 @@
+// ais_node: AIVDM sentences in (UDP, TCP, serial, file or the nmea_in topic), decoded AIS targets out.
+//
+// Subscribes: nmea_in (asv_msgs/NmeaSentence) when input/type is topic
+// Publishes:  nmea (asv_msgs/NmeaSentence, every line read from a device), ais/targets
+//             (asv_msgs/TargetArray in the local ENU frame of origin_lat_deg/origin_lon_deg: each array
+//             holds the ships reported since the previous one, static and voyage data merged per MMSI),
+//             /diagnostics
+// Parameters: see config/ais_node.yaml (every key documented there).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+
+#include <asv_core/ais.h>
+#include <asv_core/geodesy.h>
+#include <asv_msgs/TargetArray.h>
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+
+#include "asv_risk/nmea_input.h"
+
+namespace asv_risk {
+
+struct AisNodeParams {
+  double origin_lat_deg = 0.0;  // required
+  double origin_lon_deg = 0.0;  // required
+  std::string frame_id = "map";
+  double publish_rate = 10.0;             // [Hz] ais/targets
+  double max_range = 200000.0;            // [m] reports farther from the origin are rejected
+  std::size_t max_targets = 5000;         // ships remembered; the least recently heard is forgotten
+  double forget_after = 900.0;            // [s] a ship not heard for this long is forgotten
+  double position_sigma_high = 10.0;      // [m] 1-sigma of a fix with the accuracy flag set (DGNSS)
+  double position_sigma_low = 30.0;       // [m] 1-sigma of a fix without it (GNSS)
+  double silence_warning = 30.0;          // [s] diagnostics warn when no sentence came for this long
+  std::size_t max_sentence_length = 512;  // [bytes] framer limit (tag block included)
+  asv::ais::DecoderConfig decoder;
+  std::size_t max_static = 10000;  // ships whose static data is remembered
+  NmeaInputParams input;
+};
+
+AisNodeParams loadAisParams(const ros::NodeHandle& pnh);
+
+// Why a decoded message did not become a target; kCount is the number of reasons.
+enum class AisReject { kNone = 0, kNoPosition, kBadMmsi, kOutOfRange, kCount };
+const char* toString(AisReject r);
+
+class AisNode {
+public:
+  AisNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+  // One line of NMEA (as read from the input); public for tests.
+  void handleLine(const std::string& line, const ros::Time& stamp);
+  std::size_t targetCount() const { return ships_.size(); }
+
+private:
+  struct Ship {
+    asv_msgs::Target target;
+    bool dirty = false;
+  };
+
+  void handleMessage(const asv::ais::Message& m, const ros::Time& stamp);
+  void reject(AisReject why, std::uint32_t mmsi);
+  void mergeStatic(asv_msgs::Target& t) const;
+  void publish();
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
+
+  ros::NodeHandle nh_, pnh_;
+  AisNodeParams params_;
+  asv::LocalFrame frame_;
+  LineFramer framer_;
+  asv::ais::Decoder decoder_;
+  asv::ais::Message message_;
+  asv::ais::StaticStore store_;
+  std::unordered_map<std::uint32_t, Ship> ships_;
+  ros::Publisher targets_pub_;
+  ros::Timer publish_timer_, diag_timer_;
+  diagnostic_updater::Updater updater_;
+  std::unique_ptr<NmeaInput> input_;  // last: its thread starts once everything else exists
+
+  std::uint64_t rejected_[static_cast<std::size_t>(AisReject::kCount)] = {};
+  std::uint64_t reports_ = 0, own_ship_ = 0, not_ships_ = 0, other_sentences_ = 0, evicted_ = 0;
+  std::uint64_t published_ = 0;
+  ros::WallTime last_sentence_;
+  // For rates and "since the last report" in diagnostics.
+  ros::WallTime diag_time_;
+  std::uint64_t diag_sentences_ = 0, diag_rejected_ = 0;
+};
+
+}  // namespace asv_risk

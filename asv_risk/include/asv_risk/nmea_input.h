@@ -1,0 +1,155 @@
+// NMEA 0183 line input shared by ais_node and arpa_node: UDP, TCP client, serial device, file replay,
+// or the raw-sentence topic `nmea_in` (asv_msgs/NmeaSentence, as rosbag records and replays it).
+//
+// Device inputs run in one reader thread that splits the byte stream into lines and queues them;
+// a ROS timer drains the queue in the spinner thread, so the node's handler never runs concurrently
+// with its other callbacks. Memory is bounded everywhere: one fixed receive buffer, lines longer
+// than max_line_length are dropped (counted), and the queue holds at most queue_size lines (network
+// and serial input beyond it is dropped and counted; file replay waits instead).
+// Every line read from a device is republished on `nmea` (asv_msgs/NmeaSentence with receive stamp
+// and source) when `republish` is set, so a bag of `nmea` replays into `nmea_in` unchanged.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <set>
+#include <string>
+#include <string_view>
+#include <thread>
+
+#include <asv_core/nmea.h>
+#include <asv_msgs/NmeaSentence.h>
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+
+namespace asv_risk {
+
+struct NmeaInputParams {
+  std::string type = "udp";  // udp | tcp | serial | file | topic
+  // udp: datagrams on this local address and port. 127.0.0.1 (the default) hears only this
+  // machine; bind 0.0.0.0 (or the LAN interface's address) to hear a receiver on the LAN.
+  std::string udp_bind_address = "127.0.0.1";
+  int udp_port = 10110;
+  // tcp: client of a receiver/multiplexer server; reconnects with exponential backoff.
+  std::string tcp_host = "127.0.0.1";
+  int tcp_port = 10110;
+  double tcp_reconnect_min = 1.0;   // [s] first retry delay, doubled per failure
+  double tcp_reconnect_max = 30.0;  // [s] longest retry delay
+  // serial: raw 8N1 at this baud rate (AIS receivers 38400, radars 4800).
+  std::string serial_device = "/dev/ttyUSB0";
+  int serial_baud = 38400;
+  // file: replay of a log, one sentence per line.
+  std::string file_path;
+  std::string file_timing = "tags";  // tags: original timing from tag-block c: times | rate | fast
+  double file_rate = 10.0;           // [lines/s] for timing rate
+  double file_speed = 1.0;           // playback speed factor for timing tags
+  double file_max_gap = 10.0;        // [s] longest pause taken from the tag times (log gaps)
+  bool file_loop = false;            // start again at the end
+  // all inputs
+  std::string frame_id = "ais";        // NmeaSentence header.frame_id of republished sentences
+  std::size_t max_line_length = 1024;  // [bytes] longer lines are dropped and counted
+  std::size_t queue_size = 10000;      // lines waiting for the node
+  bool republish = true;               // publish every line read from a device on `nmea`
+
+  void validate() const;  // throws std::invalid_argument
+};
+
+// Adds the input parameter keys (under `prefix`) to a node's set of known keys.
+void addInputParamKeys(std::set<std::string>& known, const std::string& prefix = "input/");
+// Reads the input parameters under `prefix`; `defaults` gives the node's own defaults.
+NmeaInputParams loadInputParams(const ros::NodeHandle& pnh, NmeaInputParams defaults,
+                                const std::string& prefix = "input/");
+
+// Splits a line into sentences (resynchronising after garbage or a broken sentence at the next
+// `$`/`!`) and counts every rejection by reason.
+class LineFramer {
+public:
+  explicit LineFramer(const asv::nmea::FramerConfig& config = {}) : config_(config) {}
+  // Calls `on_sentence` for each valid sentence of `line`.
+  void frame(std::string_view line, const std::function<void(const asv::nmea::Sentence&)>& on_sentence);
+
+  std::uint64_t sentences() const { return sentences_; }
+  std::uint64_t garbage() const { return garbage_; }
+  std::uint64_t rejected(asv::nmea::Reject r) const { return rejects_[static_cast<std::size_t>(r)]; }
+  std::uint64_t checksumFailures() const;  // missing, malformed or wrong sentence/tag-block checksums
+  std::uint64_t totalRejected() const;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) const;
+
+private:
+  asv::nmea::FramerConfig config_;
+  asv::nmea::Sentence sentence_;
+  std::uint64_t sentences_ = 0, garbage_ = 0;
+  std::uint64_t rejects_[static_cast<std::size_t>(asv::nmea::Reject::kCount)] = {};
+};
+
+struct NmeaInputStats {
+  std::uint64_t lines = 0;        // lines handed to the node
+  std::uint64_t bytes = 0;        // bytes read from the device
+  std::uint64_t oversize = 0;     // lines longer than max_line_length, dropped
+  std::uint64_t queue_drops = 0;  // lines dropped because the queue was full
+  std::uint64_t connects = 0;     // successful opens/connections
+  std::uint64_t failures = 0;     // failed opens/connections and read errors
+  bool connected = false;
+  bool finished = false;  // file replay reached its end
+};
+
+class NmeaInput {
+public:
+  // Called in the spinner thread for every line (terminator stripped) with its receive stamp.
+  using LineHandler = std::function<void(const std::string& line, const ros::Time& stamp)>;
+
+  // Opens the input (device inputs start their reader thread). Topics are resolved in `nh`.
+  NmeaInput(ros::NodeHandle nh, const NmeaInputParams& params, LineHandler handler);
+  ~NmeaInput();
+  NmeaInput(const NmeaInput&) = delete;
+  NmeaInput& operator=(const NmeaInput&) = delete;
+
+  const std::string& source() const { return source_; }  // e.g. udp://127.0.0.1:10110
+  NmeaInputStats stats() const;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) const;
+
+private:
+  struct Line {
+    std::string text;
+    ros::Time stamp;
+  };
+
+  void run();
+  void runUdp();
+  void runTcp();
+  void runSerial();
+  void runFile();
+  // Line assembly from raw bytes; `end_of_record` ends the current line (end of a UDP datagram).
+  void addBytes(const char* data, std::size_t n, bool end_of_record, bool block);
+  void endLine(bool block);
+  bool push(std::string&& text, bool block);
+  void drain();
+  void topicCallback(const asv_msgs::NmeaSentence::ConstPtr& msg);
+  bool sleepFor(double seconds);  // false when stopping
+  void setConnected(bool c, bool failed);
+
+  ros::NodeHandle nh_;
+  NmeaInputParams params_;
+  LineHandler handler_;
+  std::string source_;
+  ros::Publisher raw_pub_;
+  ros::Subscriber topic_sub_;
+  ros::Timer drain_timer_;
+
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+  mutable std::mutex mutex_;
+  std::condition_variable space_, wake_;
+  std::deque<Line> queue_;
+  NmeaInputStats stats_;  // guarded by mutex_
+
+  // Reader-thread state.
+  std::string partial_;
+  bool discarding_ = false;  // inside an oversize line: drop until its end
+};
+
+}  // namespace asv_risk

@@ -1,0 +1,70 @@
+// tracker: fuses the AIS and ARPA targets into one track per ship (asv::Tracker, asv_core/tracker.h:
+// association rule and ages documented there and in config/tracker.yaml), dead-reckons the tracks and
+// publishes them at a fixed rate with their age, source (AIS/ARPA/FUSED) and quality.
+//
+// Subscribes: ais/targets, arpa/targets (asv_msgs/TargetArray in frame_id)
+// Publishes:  targets (asv_msgs/TargetArray, every live track at publish_rate), /diagnostics
+// Parameters: see config/tracker.yaml (every key documented there).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include <asv_core/tracker.h>
+#include <asv_msgs/TargetArray.h>
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+
+namespace asv_risk {
+
+struct TrackerNodeParams {
+  std::string frame_id = "map";
+  double publish_rate = 2.0;             // [Hz] targets
+  double future_tolerance = 2.0;         // [s] reports stamped further in the future are rejected
+  double default_position_sigma = 50.0;  // [m] when a report's covariance is all 0 (unknown)
+  double ais_velocity_sigma = 0.2;       // [m/s] 1-sigma of an AIS velocity per axis
+  double arpa_velocity_sigma = 0.5;      // [m/s] 1-sigma of an ARPA velocity per axis
+  asv::TrackerConfig tracker;
+};
+
+TrackerNodeParams loadTrackerParams(const ros::NodeHandle& pnh);
+
+// Why a reported target did not reach the tracker.
+enum class TrackReject { kNone = 0, kFrame, kSource, kNonFinite, kFuture, kCount };
+const char* toString(TrackReject r);
+
+// Converts one target of an ais/targets or arpa/targets array (header stamp `array_stamp`) into a
+// tracker report; kNone on success. Exposed for tests.
+TrackReject targetToReport(const asv_msgs::Target& t, const ros::Time& array_stamp,
+                           const TrackerNodeParams& p, asv::TrackReport& out);
+
+class TrackerNode {
+public:
+  TrackerNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+private:
+  void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
+  void reject(TrackReject why, const std::string& id);
+  void publish();
+  asv_msgs::Target toMsg(const asv::TrackEstimate& e) const;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
+
+  ros::NodeHandle nh_, pnh_;
+  TrackerNodeParams params_;
+  asv::Tracker tracker_;
+  // Last message per MMSI / radar number: static data and names for the published tracks.
+  std::map<std::uint32_t, asv_msgs::Target> ais_meta_;
+  std::map<int, asv_msgs::Target> arpa_meta_;
+  ros::Subscriber ais_sub_, arpa_sub_;
+  ros::Publisher targets_pub_;
+  ros::Timer publish_timer_, diag_timer_;
+  diagnostic_updater::Updater updater_;
+
+  std::uint64_t rejected_[static_cast<std::size_t>(TrackReject::kCount)] = {};
+  std::size_t alive_ = 0, coasting_ = 0, fused_ = 0;
+  ros::WallTime diag_time_;
+  std::uint64_t diag_reports_ = 0, diag_rejected_ = 0;
+};
+
+}  // namespace asv_risk

@@ -1,0 +1,339 @@
+#include "asv_risk/ais_node.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <asv_core/units.h>
+
+#include "asv_risk/params.h"
+#include "asv_risk/target_quality.h"
+
+namespace asv_risk {
+
+namespace {
+
+constexpr std::uint32_t kMaxMmsi = 999999999;
+// Type 27 positions have 1/10 minute resolution (185 m in latitude).
+constexpr double kLongRangeSigma = 200.0;
+
+std::set<std::string> knownKeys() {
+  std::set<std::string> k = {"origin_lat_deg",  "origin_lon_deg",      "frame_id",
+                             "publish_rate",    "max_range",           "max_targets",
+                             "forget_after",    "position_sigma_high", "position_sigma_low",
+                             "silence_warning", "max_sentence_length", "fragment_timeout",
+                             "max_pending",     "max_static"};
+  addInputParamKeys(k);
+  return k;
+}
+
+std::string trimmed(std::string_view s) {
+  while (!s.empty() && (s.back() == ' ' || s.back() == '@'))
+    s.remove_suffix(1);
+  return std::string(s);
+}
+
+}  // namespace
+
+const char* toString(AisReject r) {
+  switch (r) {
+    case AisReject::kNoPosition:
+      return "no position";
+    case AisReject::kBadMmsi:
+      return "invalid MMSI";
+    case AisReject::kOutOfRange:
+      return "beyond max_range";
+    default:
+      return "none";
+  }
+}
+
+AisNodeParams loadAisParams(const ros::NodeHandle& pnh) {
+  checkUnknownParams(pnh, knownKeys(), "config/ais_node.yaml");
+  AisNodeParams p;
+  if (!pnh.hasParam("origin_lat_deg") || !pnh.hasParam("origin_lon_deg"))
+    throw std::invalid_argument("origin_lat_deg and origin_lon_deg are required (origin of the map frame)");
+  getParam(pnh, "origin_lat_deg", p.origin_lat_deg);
+  getParam(pnh, "origin_lon_deg", p.origin_lon_deg);
+  getParam(pnh, "frame_id", p.frame_id);
+  getParam(pnh, "publish_rate", p.publish_rate);
+  getParam(pnh, "max_range", p.max_range);
+  getParam(pnh, "max_targets", p.max_targets, 1);
+  getParam(pnh, "forget_after", p.forget_after);
+  getParam(pnh, "position_sigma_high", p.position_sigma_high);
+  getParam(pnh, "position_sigma_low", p.position_sigma_low);
+  getParam(pnh, "silence_warning", p.silence_warning);
+  getParam(pnh, "max_sentence_length", p.max_sentence_length, asv::nmea::kStandardMaxLength);
+  getParam(pnh, "fragment_timeout", p.decoder.fragment_timeout);
+  getParam(pnh, "max_pending", p.decoder.max_pending, 1);
+  getParam(pnh, "max_static", p.max_static, 1);
+  NmeaInputParams in;
+  in.frame_id = "ais";
+  p.input = loadInputParams(pnh, in);
+  p.decoder.validate();
+  if (p.frame_id.empty())
+    throw std::invalid_argument("frame_id must not be empty");
+  if (!(p.publish_rate > 0.0 && p.publish_rate <= 100.0))
+    throw std::invalid_argument("publish_rate must be in (0, 100] Hz");
+  if (!(p.max_range > 0.0))
+    throw std::invalid_argument("max_range must be > 0 m");
+  if (!(p.forget_after > 0.0))
+    throw std::invalid_argument("forget_after must be > 0 s");
+  if (!(p.position_sigma_high > 0.0 && p.position_sigma_low > 0.0))
+    throw std::invalid_argument("position_sigma_high and position_sigma_low must be > 0 m");
+  if (!(p.silence_warning > 0.0))
+    throw std::invalid_argument("silence_warning must be > 0 s");
+  return p;
+}
+
+AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : nh_(nh),
+      pnh_(pnh),
+      params_(loadAisParams(pnh)),
+      frame_(params_.origin_lat_deg, params_.origin_lon_deg),
+      framer_([this] {
+        asv::nmea::FramerConfig c;
+        c.max_length = params_.max_sentence_length;
+        return c;
+      }()),
+      decoder_(params_.decoder),
+      store_([this] {
+        asv::ais::StaticStoreConfig c;
+        c.max_ships = params_.max_static;
+        return c;
+      }()) {
+  targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("ais/targets", 10);
+  publish_timer_ = nh_.createTimer(ros::Duration(1.0 / params_.publish_rate),
+                                   [this](const ros::TimerEvent&) { publish(); });
+  updater_.setHardwareID("ais");
+  updater_.add("ais input", this, &AisNode::diagnose);
+  diag_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
+  last_sentence_ = diag_time_ = ros::WallTime::now();
+  input_ = std::make_unique<NmeaInput>(
+      nh_, params_.input, [this](const std::string& l, const ros::Time& t) { handleLine(l, t); });
+  ROS_INFO("ais_node: input %s, origin %.6f %.6f, targets on %s in frame '%s'", input_->source().c_str(),
+           params_.origin_lat_deg, params_.origin_lon_deg, targets_pub_.getTopic().c_str(),
+           params_.frame_id.c_str());
+}
+
+void AisNode::handleLine(const std::string& line, const ros::Time& stamp) {
+  const double now = stamp.toSec();
+  framer_.frame(line, [&](const asv::nmea::Sentence& s) {
+    last_sentence_ = ros::WallTime::now();
+    const asv::ais::Status st = decoder_.feed(s, now, message_);
+    if (st == asv::ais::Status::kNotAis)
+      ++other_sentences_;
+    else if (st == asv::ais::Status::kMessage)
+      handleMessage(message_, stamp);
+    else if (st != asv::ais::Status::kPending && st != asv::ais::Status::kUnsupportedType)
+      ROS_WARN_THROTTLE(10.0, "ais_node: AIS sentence rejected (%s); counted in diagnostics",
+                        asv::ais::statusText(st));
+  });
+}
+
+void AisNode::reject(AisReject why, std::uint32_t mmsi) {
+  ++rejected_[static_cast<std::size_t>(why)];
+  ROS_WARN_THROTTLE(10.0, "ais_node: report of MMSI %u rejected (%s); counted in diagnostics", mmsi,
+                    toString(why));
+}
+
+void AisNode::handleMessage(const asv::ais::Message& m, const ros::Time& stamp) {
+  namespace ais = asv::ais;
+  if (m.own_ship) {  // AIVDO: our own transponder, not a target
+    ++own_ship_;
+    return;
+  }
+  const bool had_static = store_.update(m) != nullptr;
+  uint8_t ais_class = 0;
+  double sigma = params_.position_sigma_low;
+  uint8_t nav_status = 15;
+  if (const auto* a = std::get_if<ais::PositionReportA>(&m.body)) {
+    ais_class = asv_msgs::Target::AIS_CLASS_A;
+    sigma = a->accuracy ? params_.position_sigma_high : params_.position_sigma_low;
+    nav_status = a->status;
+  } else if (const auto* b = std::get_if<ais::PositionReportB>(&m.body)) {
+    ais_class = asv_msgs::Target::AIS_CLASS_B;
+    sigma = b->accuracy ? params_.position_sigma_high : params_.position_sigma_low;
+  } else if (const auto* l = std::get_if<ais::LongRangeReport>(&m.body)) {
+    ais_class = asv_msgs::Target::AIS_CLASS_A;
+    sigma = kLongRangeSigma;
+    nav_status = l->status;
+  } else {
+    // Static data only (5, 24), base stations (4), aids to navigation (21): not a ship's position.
+    if (!had_static)
+      ++not_ships_;
+    return;
+  }
+  ais::Kinematics k;
+  if (!ais::toKinematics(m, k) || !k.has_position) {
+    reject(AisReject::kNoPosition, m.mmsi);
+    return;
+  }
+  if (m.mmsi == 0 || m.mmsi > kMaxMmsi) {
+    reject(AisReject::kBadMmsi, m.mmsi);
+    return;
+  }
+  const Eigen::Vector2d p = frame_.toLocal(k.lat_deg, k.lon_deg);
+  if (!(p.allFinite() && p.norm() <= params_.max_range)) {
+    reject(AisReject::kOutOfRange, m.mmsi);
+    return;
+  }
+  ++reports_;
+
+  auto it = ships_.find(m.mmsi);
+  if (it == ships_.end()) {
+    if (ships_.size() >= params_.max_targets) {
+      auto oldest = std::min_element(ships_.begin(), ships_.end(), [](const auto& a, const auto& b) {
+        return a.second.target.stamp < b.second.target.stamp;
+      });
+      ships_.erase(oldest);
+      ++evicted_;
+    }
+    it = ships_.emplace(m.mmsi, Ship()).first;
+  }
+  asv_msgs::Target& t = it->second.target;
+  t = asv_msgs::Target();
+  t.id = "ais:" + std::to_string(m.mmsi);
+  t.source = asv_msgs::Target::SOURCE_AIS;
+  t.ais_class = ais_class;
+  t.mmsi = m.mmsi;
+  t.nav_status = nav_status;
+  t.position.x = p.x();
+  t.position.y = p.y();
+  t.has_geodetic = true;
+  t.latitude = k.lat_deg;
+  t.longitude = k.lon_deg;
+  // asv_msgs/Target has no has_course/has_speed: an unknown velocity is said by the quality.
+  t.quality = kQualityFull;
+  double course = 0.0, speed = 0.0;
+  bool velocity = true;
+  if (k.has_speed && k.has_course) {
+    course = k.course;
+    speed = k.speed;
+  } else if (k.has_speed && k.has_heading) {
+    course = k.heading;  // a ship makes good roughly its heading
+    speed = k.speed;
+    t.quality = kQualityCourseFromHeading;
+  } else if (k.has_speed && k.speed == 0.0) {
+    speed = 0.0;  // stopped: the course does not matter
+  } else {
+    velocity = false;
+    t.quality = kQualityNoVelocity;
+  }
+  if (velocity) {
+    t.course_over_ground = asv::wrapTwoPi(course);
+    t.speed_over_ground = speed;
+    const Eigen::Vector2d v = asv::courseSpeedToVelocity(course, speed);
+    t.velocity.x = v.x();
+    t.velocity.y = v.y();
+  }
+  if (k.has_heading) {
+    t.has_heading = true;
+    t.heading = k.heading;
+  }
+  if (k.has_turn) {
+    t.has_rate_of_turn = true;
+    t.rate_of_turn = k.rate_of_turn;
+  }
+  t.position_covariance = {sigma * sigma, 0.0, 0.0, sigma * sigma};
+  t.stamp = stamp;
+  mergeStatic(t);
+  it->second.dirty = true;
+}
+
+void AisNode::mergeStatic(asv_msgs::Target& t) const {
+  const asv::ais::ShipStatic* s = store_.find(t.mmsi);
+  if (!s)
+    return;
+  if (s->has_name)
+    t.name = trimmed(s->shipname.view());
+  t.call_sign = trimmed(s->callsign.view());
+  t.destination = trimmed(s->destination.view());
+  if (s->has_type)
+    t.ship_type = s->shiptype;
+  if (s->has_dimensions) {
+    t.to_bow = static_cast<float>(s->to_bow);
+    t.to_stern = static_cast<float>(s->to_stern);
+    t.to_port = static_cast<float>(s->to_port);
+    t.to_starboard = static_cast<float>(s->to_starboard);
+    t.length = static_cast<float>(s->length());
+    t.beam = static_cast<float>(s->beam());
+  }
+}
+
+void AisNode::publish() {
+  const ros::Time now = ros::Time::now();
+  decoder_.expire(now.toSec());
+  asv_msgs::TargetArray arr;
+  arr.header.stamp = now;
+  arr.header.frame_id = params_.frame_id;
+  for (auto it = ships_.begin(); it != ships_.end();) {
+    Ship& s = it->second;
+    const double age = (now - s.target.stamp).toSec();
+    if (age > params_.forget_after) {
+      it = ships_.erase(it);
+      continue;
+    }
+    if (s.dirty) {
+      mergeStatic(s.target);  // static data may have arrived after the position
+      s.target.age = std::max(0.0, age);
+      arr.targets.push_back(s.target);
+      s.dirty = false;
+    }
+    ++it;
+  }
+  if (arr.targets.empty())
+    return;
+  targets_pub_.publish(arr);
+  ++published_;
+}
+
+void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
+  const ros::WallTime now = ros::WallTime::now();
+  const double dt = std::max(1e-3, (now - diag_time_).toSec());
+  const asv::ais::Counters& c = decoder_.counters();
+  const std::uint64_t reassembly_drops = c.orphans + c.out_of_order + c.timeouts + c.evicted + c.restarted;
+  std::uint64_t rejected_values = 0;
+  for (std::size_t i = 1; i < static_cast<std::size_t>(AisReject::kCount); ++i) {
+    stat.add(std::string("rejected: ") + toString(static_cast<AisReject>(i)), rejected_[i]);
+    rejected_values += rejected_[i];
+  }
+  const std::uint64_t decode_errors =
+      c.bad_fields + c.bad_fill + c.bad_armour + c.empty_payload + c.too_short + c.bad_part;
+  const std::uint64_t rejected = framer_.totalRejected() + reassembly_drops + decode_errors + rejected_values;
+  stat.add("sentences per second", (framer_.sentences() - diag_sentences_) / dt);
+  framer_.diagnose(stat);
+  stat.add("AIS sentences", c.sentences);
+  stat.add("other sentences", other_sentences_);
+  stat.add("messages decoded", c.messages);
+  stat.add("reassembly drops", reassembly_drops);
+  stat.add("fragments pending", decoder_.pendingCount());
+  stat.add("decode errors (fields, fill bits, armour, length, part)", decode_errors);
+  stat.add("unsupported message types", c.unsupported);
+  stat.add("rejected values", rejected_values);
+  stat.add("position reports", reports_);
+  stat.add("own ship (VDO) reports ignored", own_ship_);
+  stat.add("base stations / aids to navigation ignored", not_ships_);
+  stat.add("targets known", ships_.size());
+  stat.add("targets forgotten (max_targets)", evicted_);
+  stat.add("static records", store_.size());
+  stat.add("target arrays published", published_);
+  input_->diagnose(stat);
+  const NmeaInputStats in = input_->stats();
+  const double silent = (now - last_sentence_).toSec();
+  if (!in.connected && !in.finished && params_.input.type != "topic")
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::ERROR, "input %s not connected",
+                  input_->source().c_str());
+  else if (silent > params_.silence_warning)
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "no sentence for %.0f s", silent);
+  else if (rejected > diag_rejected_)
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "%lu inputs rejected since the last report",
+                  static_cast<unsigned long>(rejected - diag_rejected_));
+  else
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::OK, "%zu targets", ships_.size());
+  diag_time_ = now;
+  diag_sentences_ = framer_.sentences();
+  diag_rejected_ = rejected;
+}
+
+}  // namespace asv_risk
