@@ -100,6 +100,9 @@ SimNodeParams loadParams(const ros::NodeHandle& pnh) {
   get(pnh, "stop_on_collision", p.stop_on_collision);
   get(pnh, "shutdown_at_end", p.shutdown_at_end);
   get(pnh, "start_delay", p.start_delay);
+  get(pnh, "max_sim_time", p.max_sim_time);
+  if (!(p.max_sim_time >= 0.0))
+    throw std::invalid_argument("max_sim_time must be >= 0 s (0: the scenario's duration)");
   auto& s = p.sim;
   get(pnh, "dt", s.dt);
   get(pnh, "collision_distance", s.collision_distance);
@@ -286,6 +289,27 @@ void SimNode::publishState(bool odom, bool ships) {
       m.color.g = v.own ? 0.4f : 0.6f;
       m.color.b = v.own ? 1.0f : 0.6f;
       markers.markers.push_back(m);
+      auto& trail = trails_[i];
+      geometry_msgs::Point tp;
+      tp.x = s.x;
+      tp.y = s.y;
+      if (trail.empty() || std::hypot(trail.back().x - s.x, trail.back().y - s.y) > 20.0)
+        trail.push_back(tp);
+      if (trail.size() > 2000)
+        trail.erase(trail.begin(), trail.begin() + 1000);  // bounded memory
+      if (trail.size() >= 2) {
+        visualization_msgs::Marker tr;
+        tr.header = arr.header;
+        tr.ns = "trails";
+        tr.id = static_cast<int>(i);
+        tr.type = visualization_msgs::Marker::LINE_STRIP;
+        tr.pose.orientation.w = 1.0;
+        tr.scale.x = 12.0;
+        tr.color = m.color;
+        tr.color.a = 0.7f;
+        tr.points = trail;
+        markers.markers.push_back(tr);
+      }
       m.ns = "names";
       m.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
       m.pose.position.y += 120.0;
@@ -359,7 +383,8 @@ int SimNode::run() {
   size_t events_done = 0;
   long k = 0;
   std::vector<std::string> ais, ttm;
-  while (ros::ok() && !sim_->finished()) {
+  while (ros::ok() && !sim_->finished() &&
+         !(params_.max_sim_time > 0.0 && sim_->time() >= params_.max_sim_time)) {
     ais.clear();
     ttm.clear();
     emitter_->update(*sim_, ais, ttm);

@@ -8,6 +8,7 @@
 // Parameters: config/sim_node.yaml (every key documented there).
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include <asv_core/simulation.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/Point.h>
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 
@@ -34,6 +36,7 @@ struct SimNodeParams {
   bool stop_on_collision = false;
   bool shutdown_at_end = true;  // shut the node down when the scenario ends (launch: required="true")
   double start_delay = 1.0;     // [s, wall] wait for subscribers before time starts
+  double max_sim_time = 0.0;    // [s] end the run here if earlier than the scenario end (0: no limit)
   asv::SimConfig sim;
   asv::EmitterConfig emitter;
 };
@@ -66,6 +69,7 @@ private:
   int udp_fd_ = -1;
   uint64_t cmds_ok_ = 0, cmds_rejected_ = 0, nmea_sent_ = 0;
   double achieved_rtf_ = 0.0;
+  std::map<size_t, std::vector<geometry_msgs::Point>> trails_;  // markers: where each ship has been
 };
 
 }  // namespace asv_sim
