@@ -26,6 +26,7 @@ constexpr double kEpoch = 1.0e9;  // [s] ROS time of simulation time 0
 
 const std::set<std::string> kKnownParams = {"scenario",
                                             "seed",
+                                            "max_sim_time",
                                             "rate",
                                             "publish_clock",
                                             "odom_rate",
@@ -279,8 +280,8 @@ void SimNode::publishState(bool odom, bool ships) {
       m.type = visualization_msgs::Marker::CUBE;
       m.pose.position = t.position;
       m.pose.orientation = yawQuaternion(yaw);
-      // Drawn at least 60 m long so that ships stay visible at scenario scale.
-      const double scale = std::max(1.0, 60.0 / std::max(1.0, v.length));
+      // Drawn at least 250 m long so that ships stay visible at scenario scale.
+      const double scale = std::max(1.0, 250.0 / std::max(1.0, v.length));
       m.scale.x = v.length * scale;
       m.scale.y = v.beam * scale;
       m.scale.z = 5.0;
