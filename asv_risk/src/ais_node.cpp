@@ -18,11 +18,11 @@ constexpr std::uint32_t kMaxMmsi = 999999999;
 constexpr double kLongRangeSigma = 200.0;
 
 std::set<std::string> knownKeys() {
-  std::set<std::string> k = {"origin_lat_deg",  "origin_lon_deg",      "frame_id",
-                             "publish_rate",    "max_range",           "max_targets",
-                             "forget_after",    "position_sigma_high", "position_sigma_low",
-                             "silence_warning", "max_sentence_length", "fragment_timeout",
-                             "max_pending",     "max_static"};
+  std::set<std::string> k = {"origin_lat_deg",     "origin_scenario", "origin_lon_deg",
+                             "frame_id",           "publish_rate",    "max_range",
+                             "max_targets",        "forget_after",    "position_sigma_high",
+                             "position_sigma_low", "silence_warning", "max_sentence_length",
+                             "fragment_timeout",   "max_pending",     "max_static"};
   addInputParamKeys(k);
   return k;
 }
@@ -51,10 +51,7 @@ const char* toString(AisReject r) {
 AisNodeParams loadAisParams(const ros::NodeHandle& pnh) {
   checkUnknownParams(pnh, knownKeys(), "config/ais_node.yaml");
   AisNodeParams p;
-  if (!pnh.hasParam("origin_lat_deg") || !pnh.hasParam("origin_lon_deg"))
-    throw std::invalid_argument("origin_lat_deg and origin_lon_deg are required (origin of the map frame)");
-  getParam(pnh, "origin_lat_deg", p.origin_lat_deg);
-  getParam(pnh, "origin_lon_deg", p.origin_lon_deg);
+  getOrigin(pnh, p.origin_lat_deg, p.origin_lon_deg);
   getParam(pnh, "frame_id", p.frame_id);
   getParam(pnh, "publish_rate", p.publish_rate);
   getParam(pnh, "max_range", p.max_range);

@@ -15,10 +15,10 @@ namespace {
 
 std::set<std::string> knownKeys() {
   std::set<std::string> k = {
-      "origin_lat_deg",    "origin_lon_deg", "frame_id",        "publish_rate",        "odom_timeout",
-      "max_range",         "max_targets",    "forget_after",    "range_sigma",         "range_sigma_fraction",
-      "bearing_sigma_deg", "tll_sigma",      "silence_warning", "max_sentence_length", "max_distance",
-      "max_speed"};
+      "origin_lat_deg",       "origin_scenario",   "origin_lon_deg", "frame_id",        "publish_rate",
+      "odom_timeout",         "max_range",         "max_targets",    "forget_after",    "range_sigma",
+      "range_sigma_fraction", "bearing_sigma_deg", "tll_sigma",      "silence_warning", "max_sentence_length",
+      "max_distance",         "max_speed"};
   addInputParamKeys(k);
   return k;
 }
@@ -49,10 +49,7 @@ const char* toString(ArpaReject r) {
 ArpaNodeParams loadArpaParams(const ros::NodeHandle& pnh) {
   checkUnknownParams(pnh, knownKeys(), "config/arpa_node.yaml");
   ArpaNodeParams p;
-  if (!pnh.hasParam("origin_lat_deg") || !pnh.hasParam("origin_lon_deg"))
-    throw std::invalid_argument("origin_lat_deg and origin_lon_deg are required (origin of the map frame)");
-  getParam(pnh, "origin_lat_deg", p.origin_lat_deg);
-  getParam(pnh, "origin_lon_deg", p.origin_lon_deg);
+  getOrigin(pnh, p.origin_lat_deg, p.origin_lon_deg);
   getParam(pnh, "frame_id", p.frame_id);
   getParam(pnh, "publish_rate", p.publish_rate);
   getParam(pnh, "odom_timeout", p.odom_timeout);

@@ -29,4 +29,9 @@ void getParam(const ros::NodeHandle& pnh, const std::string& key, T& value) {
 // Same for unsigned sizes and ports, read as int and checked to be >= `min`.
 void getParam(const ros::NodeHandle& pnh, const std::string& key, std::size_t& value, std::size_t min = 0);
 
+// Reads the map-frame origin: `origin_scenario` (a scenario file, format 1) when set and non-empty,
+// so that a launch takes the origin from the scenario it runs; else the required
+// `origin_lat_deg`/`origin_lon_deg`. Throws std::invalid_argument when neither is usable.
+void getOrigin(const ros::NodeHandle& pnh, double& lat_deg, double& lon_deg);
+
 }  // namespace asv_risk
