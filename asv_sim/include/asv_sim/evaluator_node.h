@@ -1,0 +1,66 @@
+// evaluator_node: the run evaluator over ROS topics, a thin wrapper over asv::RunRecorder (the same
+// code asv_batch uses), writing the run result of ARCHITECTURE.md section 6.
+//
+// Subscribes: sim/ships (asv_msgs/TargetArray: ground truth; the own ship is the entry whose id is
+//   ~own_ship), sim/events (asv_msgs/SimEvent: END ends the run), <own>/plan (asv_msgs/Plan: compute
+//   times), <own>/cmd (asv_msgs/CourseSpeedSetpoint: manoeuvres)
+// Writes: ~result (JSON file, directories created) when END arrives; a summary table on rosconsole.
+// Parameters: config/evaluator_node.yaml (every key documented there).
+#pragma once
+
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <asv_core/evaluation.h>
+#include <asv_core/scenario.h>
+#include <asv_msgs/CourseSpeedSetpoint.h>
+#include <asv_msgs/Plan.h>
+#include <asv_msgs/SimEvent.h>
+#include <asv_msgs/TargetArray.h>
+#include <ros/ros.h>
+
+namespace asv_sim {
+
+struct EvaluatorNodeParams {
+  std::string own_ship = "own";  // id of the own ship in sim/ships
+  std::string result;            // path of the result file ("" = do not write)
+  std::string scenario;          // optional scenario file: name, goals, safety threshold, ship list
+  std::string planner;           // planner name for the result ("" = from <own>/plan or the scenario)
+  int seed = 1;                  // seed for the result (the run's planner/sim seed)
+  double time_origin = 1.0e9;    // [s] ROS time of simulation time 0 (sim_node's epoch)
+  bool shutdown_at_end = true;   // shut the node down once the result is written
+  bool pretty = true;            // indented JSON (false: one line)
+  asv::EvaluationConfig evaluation;
+};
+
+EvaluatorNodeParams loadEvaluatorParams(const ros::NodeHandle& pnh);
+
+class EvaluatorNode {
+public:
+  EvaluatorNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+  bool done() const { return done_; }
+
+private:
+  void shipsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
+  void eventCallback(const asv_msgs::SimEvent::ConstPtr& msg);
+  void planCallback(const asv_msgs::Plan::ConstPtr& msg);
+  void cmdCallback(const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg);
+  void start(const asv_msgs::TargetArray& first);
+  void finish();
+  double simTime(const ros::Time& stamp) const { return stamp.toSec() - params_.time_origin; }
+
+  ros::NodeHandle nh_, pnh_;
+  EvaluatorNodeParams params_;
+  std::unique_ptr<asv::Scenario> scenario_;
+  std::unique_ptr<asv::RunRecorder> recorder_;
+  ros::Subscriber ships_sub_, events_sub_, plan_sub_, cmd_sub_;
+  std::set<std::string> arrived_;
+  std::vector<asv::SimEvent> pending_;  // events before the first sim/ships message
+  std::string planner_seen_;
+  ros::WallTime wall_start_;
+  bool done_ = false;
+};
+
+}  // namespace asv_sim

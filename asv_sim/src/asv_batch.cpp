@@ -1,0 +1,513 @@
+// asv_batch: runs a scenario faster than real time in one process, with the same core components as
+// the ROS pipeline (Simulation, RiskAssessor, the planner plugins loaded through pluginlib by short
+// name, planner_node's replanning policy through asv::PlanFollower, the evaluator's RunRecorder), and
+// writes one run result per line (ARCHITECTURE.md section 6). No ROS master is needed; pluginlib finds
+// the plugins through ROS_PACKAGE_PATH (source devel/setup.bash).
+//
+// Targets are the simulator's ground truth (no NMEA round trip, no tracker): the batch measures the
+// planners, not the sensors. Ships whose planner is dssa or dssa_plus, when there are two or more of
+// them, negotiate through the in-process DssaExchange (the core DSSA code path); a single DSSA ship
+// plans against the others through its plugin, as planner_node does.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <asv_core/dssa.h>
+#include <asv_core/evaluation.h>
+#include <asv_core/plan_follower.h>
+#include <asv_core/risk_assessment.h>
+#include <asv_core/scenario.h>
+#include <asv_core/simulation.h>
+#include <asv_planning/plugin_loader.h>
+
+namespace {
+
+const char* kUsage =
+    "usage: asv_batch --scenario FILE [options]\n"
+    "\n"
+    "Runs a scenario in one process, faster than real time, and writes one run result (JSON, one object\n"
+    "per line) per run. Needs the catkin environment (source devel/setup.bash) to find the planners.\n"
+    "\n"
+    "options:\n"
+    "  --scenario FILE      scenario file (format 1), required\n"
+    "  --planner NAME       own ship's planner: aco | dssa | dssa_plus | mopso | ga | none\n"
+    "                       (default: the scenario's own_ship.planner; none steers for the goal)\n"
+    "  --seed S             first seed (default 1)\n"
+    "  --runs N             runs with seeds S .. S+N-1 (default 1)\n"
+    "  --json OUT           append the results to OUT (JSON Lines); default: stdout\n"
+    "  --trajectory CSV     write t_s,ship,x_m,y_m,course_deg,speed_mps rows (every --sample-period);\n"
+    "                       with --runs > 1 the seed goes into the name: CSV_seed<S>.csv\n"
+    "  --dt DT              integration step [s] (default 0.1)\n"
+    "  --sample-period P    trajectory CSV period [s] (default 5)\n"
+    "  --time-budget S      wall time per plan [s] (default 0.5, planner_node's)\n"
+    "  --deterministic      zero the wall-clock values (wall_time_s, plan_time_ms median/max) and give\n"
+    "                       the planners a 60 s budget so that no wall-clock deadline changes a plan\n"
+    "  --quiet              no progress bar and no summary lines\n"
+    "  --help               this text\n"
+    "\n"
+    "exit status: 0 done (whatever the runs' outcomes), 2 bad arguments, scenario or planner, 1 failure.\n";
+
+struct Options {
+  std::string scenario, planner, json, trajectory;
+  bool planner_given = false;
+  uint64_t seed = 1;
+  int runs = 1;
+  double dt = 0.1;
+  double sample_period = 5.0;
+  double time_budget = 0.5;
+  bool deterministic = false;
+  bool quiet = false;
+};
+
+[[noreturn]] void usageError(const std::string& what) {
+  std::cerr << "asv_batch: " << what << "\n(asv_batch --help for usage)\n";
+  std::exit(2);
+}
+
+double parseNumber(const std::string& opt, const std::string& v) {
+  char* end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || !std::isfinite(d))
+    usageError(opt + ": not a number: '" + v + "'");
+  return d;
+}
+
+Options parseArgs(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc)
+        usageError(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--help" || a == "-h") {
+      std::cout << kUsage;
+      std::exit(0);
+    } else if (a == "--scenario") {
+      o.scenario = value();
+    } else if (a == "--planner") {
+      o.planner = value();
+      o.planner_given = true;
+    } else if (a == "--seed") {
+      const double s = parseNumber(a, value());
+      if (s < 0 || s != std::floor(s))
+        usageError("--seed must be a non-negative integer");
+      o.seed = static_cast<uint64_t>(s);
+    } else if (a == "--runs") {
+      const double n = parseNumber(a, value());
+      if (n < 1 || n != std::floor(n) || n > 1e6)
+        usageError("--runs must be a positive integer");
+      o.runs = static_cast<int>(n);
+    } else if (a == "--json") {
+      o.json = value();
+    } else if (a == "--trajectory") {
+      o.trajectory = value();
+    } else if (a == "--dt") {
+      o.dt = parseNumber(a, value());
+      if (!(o.dt > 0.0 && o.dt <= 10.0))
+        usageError("--dt must be in (0, 10] s");
+    } else if (a == "--sample-period") {
+      o.sample_period = parseNumber(a, value());
+      if (!(o.sample_period > 0.0))
+        usageError("--sample-period must be > 0 s");
+    } else if (a == "--time-budget") {
+      o.time_budget = parseNumber(a, value());
+      if (!(o.time_budget > 0.0))
+        usageError("--time-budget must be > 0 s");
+    } else if (a == "--deterministic") {
+      o.deterministic = true;
+    } else if (a == "--quiet") {
+      o.quiet = true;
+    } else {
+      usageError("unknown argument '" + a + "'");
+    }
+  }
+  if (o.scenario.empty())
+    usageError("--scenario FILE is required");
+  if (o.deterministic)
+    o.time_budget = 60.0;
+  return o;
+}
+
+bool isDssa(const std::string& p) {
+  return p == "dssa" || p == "dssa_plus";
+}
+
+// The dssa plugins' sea-scale defaults (asv_planning/src/plugins.cpp, dssaSeaDefaults): the agents of
+// the in-process exchange must negotiate with the same parameters as the plugin.
+asv::ParamMap dssaSeaDefaults() {
+  asv::ParamMap p;
+  p.set("time_window", 600.0);
+  p.set("detection_range", 11112.0);
+  p.set("collision_distance", 926.0);
+  p.set("time_step", 10.0);
+  p.set("speed_change_max", 4.0);
+  p.set("speed_change_step", 1.0);
+  return p;
+}
+
+asv::DssaConfig dssaConfig(const std::string& planner, const asv::ParamMap& scenario_params) {
+  asv::ParamMap p = dssaSeaDefaults();
+  p.set("preset", planner);
+  const asv::ParamMap own = scenario_params.sub(planner);
+  for (const auto& kv : own.values())
+    p.set(kv.first, kv.second);
+  return asv::DssaConfig::fromParams(p);
+}
+
+std::string trajectoryPath(const Options& o, uint64_t seed) {
+  if (o.runs == 1)
+    return o.trajectory;
+  const std::string& t = o.trajectory;
+  const size_t dot = t.rfind('.');
+  const size_t slash = t.rfind('/');
+  const std::string suffix = "_seed" + std::to_string(seed);
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return t + suffix;
+  return t.substr(0, dot) + suffix + t.substr(dot);
+}
+
+class Progress {
+public:
+  Progress(bool enabled, int runs) : enabled_(enabled), runs_(runs) {}
+  void update(int run, double fraction) {
+    if (!enabled_)
+      return;
+    const int pct = static_cast<int>(100.0 * fraction);
+    if (pct == last_pct_ && run == last_run_)
+      return;
+    last_pct_ = pct;
+    last_run_ = run;
+    const int width = 30, fill = pct * width / 100;
+    std::fprintf(stderr, "\r[%s%s] run %d/%d %3d%%", std::string(fill, '#').c_str(),
+                 std::string(width - fill, ' ').c_str(), run + 1, runs_, pct);
+    std::fflush(stderr);
+  }
+  void clear() {
+    if (enabled_ && last_pct_ >= 0)
+      std::fprintf(stderr, "\r%*s\r", 60, "");
+    last_pct_ = -1;
+  }
+
+private:
+  bool enabled_;
+  int runs_;
+  int last_pct_ = -1, last_run_ = -1;
+};
+
+// One ship that plans through a plugin, as planner_node does.
+struct PluginShip {
+  size_t index;
+  std::string planner;
+  pluginlib::UniquePtr<asv_planning::PlannerPlugin> plugin;
+  asv::PlanFollower follower;
+  asv::RiskAssessor risk;
+};
+
+std::vector<asv::PlannerTarget> plannerTargets(const asv::Simulation& sim, size_t self,
+                                               asv::RiskAssessor& risk) {
+  const auto& vs = sim.vessels();
+  const asv::ShipState own = vs[self].shipState();
+  std::vector<asv::ShipState> others;
+  for (size_t j = 0; j < vs.size(); ++j)
+    if (j != self && !vs[j].arrived)
+      others.push_back(vs[j].shipState());
+  const std::vector<asv::TargetRisk> rs = risk.assessAll(own, others);
+  std::vector<asv::PlannerTarget> out;
+  for (size_t k = 0; k < others.size(); ++k) {
+    asv::PlannerTarget t;
+    t.state = others[k];
+    const asv::TargetRisk& r = rs[k];
+    t.risk = r.compliance.risk;
+    t.compliant = r.compliance.compliant;
+    t.encounter = r.geometry.encounter;
+    t.role = r.geometry.role;
+    t.cri = r.cri.cri;
+    t.tcpa = r.cpa.tcpa;
+    t.dcpa = r.cpa.dcpa;
+    out.push_back(t);
+  }
+  return out;
+}
+
+double wallSeconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+// Runs one seed; returns the result.
+asv::RunResult runOnce(const Options& o, const asv::Scenario& sc, const std::string& own_planner,
+                       uint64_t seed, asv_planning::PluginLoader& loader, Progress& progress, int run_index) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  asv::SimConfig simcfg;
+  simcfg.dt = o.dt;
+  asv::Simulation sim(sc, simcfg);
+  const auto& vs = sim.vessels();
+  asv::RunRecorder rec(asv::EvaluationConfig{}, asv::RunInfo::fromScenario(sc, own_planner, seed));
+
+  // Who plans with what.
+  std::vector<std::string> planner_of(vs.size());
+  planner_of[0] = own_planner;
+  for (size_t i = 1; i < vs.size(); ++i)
+    if (sc.targets[i - 1].behaviour == asv::Behaviour::Planner)
+      planner_of[i] = sc.targets[i - 1].planner.empty() ? "none" : sc.targets[i - 1].planner;
+  std::vector<size_t> dssa_ships;
+  for (size_t i = 0; i < vs.size(); ++i)
+    if (isDssa(planner_of[i]))
+      dssa_ships.push_back(i);
+  const bool exchange_mode = dssa_ships.size() >= 2;
+
+  std::vector<std::unique_ptr<PluginShip>> plugin_ships;
+  for (size_t i = 0; i < vs.size(); ++i) {
+    const std::string& p = planner_of[i];
+    if (p.empty() || p == "none" || (exchange_mode && isDssa(p)))
+      continue;
+    asv::PlanFollowerConfig fc;
+    fc.time_budget = o.time_budget;
+    fc.seed = static_cast<int>(seed);
+    fc.cruise_speed = vs[i].cruise_speed;
+    auto ps = std::make_unique<PluginShip>(PluginShip{i, p, loader.load(p, sc.planner_params.sub(p)),
+                                                      asv::PlanFollower(fc), asv::RiskAssessor()});
+    if (vs[i].goal)
+      ps->follower.setGoal(*vs[i].goal);
+    ps->follower.setObstacles(sc.obstacles);
+    plugin_ships.push_back(std::move(ps));
+  }
+
+  // DSSA exchange group.
+  std::vector<asv::DssaAgent> agents;
+  std::vector<std::mt19937_64> rngs;
+  std::vector<Eigen::Vector2d> agent_goals;
+  std::unique_ptr<asv::DssaExchange> exchange;
+  double dssa_period = 10.0;
+  if (exchange_mode) {
+    const asv::DssaConfig group_cfg = dssaConfig(planner_of[dssa_ships.front()], sc.planner_params);
+    dssa_period = group_cfg.time_step;
+    exchange = std::make_unique<asv::DssaExchange>(group_cfg);
+    for (size_t i : dssa_ships) {
+      const asv::DssaConfig cfg = dssaConfig(planner_of[i], sc.planner_params);
+      asv::DssaShipSpeeds speeds;
+      speeds.ref = std::max(0.5, vs[i].cruise_speed);
+      speeds.min = 0.0;
+      speeds.max = std::max(speeds.ref, asv::OwnShipLimits{}.max_speed);
+      agents.emplace_back(static_cast<int>(i), cfg, speeds);
+      rngs.emplace_back(asv::dssaAgentSeed(seed, static_cast<int>(i)));
+      agent_goals.push_back(
+          vs[i].goal ? *vs[i].goal : vs[i].position() + asv::courseSpeedToVelocity(vs[i].cruise_course, 1e6));
+    }
+  }
+
+  std::ofstream traj;
+  if (!o.trajectory.empty()) {
+    const std::string path = trajectoryPath(o, seed);
+    traj.open(path);
+    if (!traj)
+      throw std::runtime_error("cannot write trajectory file " + path);
+    traj << "t_s,ship,x_m,y_m,course_deg,speed_mps\n";
+  }
+  auto writeTrajectory = [&]() {
+    if (!traj.is_open())
+      return;
+    char buf[256];
+    for (const auto& v : vs) {
+      std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.2f\n", sim.time(), v.name.c_str(),
+                    v.position().x(), v.position().y(), asv::radToDeg(v.cog()), v.sog());
+      traj << buf;
+    }
+  };
+  auto sample = [&]() {
+    std::vector<asv::ShipSample> ss;
+    ss.reserve(vs.size());
+    for (const auto& v : vs) {
+      asv::ShipSample s;
+      s.name = v.name;
+      s.state = v.shipState();
+      s.course_setpoint = v.course_sp;
+      s.active = !v.arrived;
+      ss.push_back(std::move(s));
+    }
+    rec.addSample(sim.time(), ss);
+  };
+
+  const double setpoint_period = 1.0;  // planner_node's setpoint_rate (1 Hz)
+  double next_tick = 0.0, next_dssa = 0.0, next_traj = 0.0;
+  size_t events_done = 0;
+  sample();
+  const long steps = static_cast<long>(std::ceil(sc.duration / o.dt - 1e-9));
+  for (long k = 0; !sim.finished(); ++k) {
+    const double now = sim.time();
+    if (now >= next_traj - 1e-9) {
+      writeTrajectory();
+      next_traj += o.sample_period;
+    }
+    if (now >= next_tick - 1e-9) {
+      next_tick += setpoint_period;
+      for (auto& ps : plugin_ships) {
+        const asv::SimVessel& v = vs[ps->index];
+        if (v.arrived)
+          continue;
+        const std::vector<asv::PlannerTarget> targets = plannerTargets(sim, ps->index, ps->risk);
+        ps->follower.updateOwn(v.shipState());
+        std::string why;
+        if (ps->follower.replanNeeded(now, targets, why)) {
+          const asv::PlanningProblem pr = ps->follower.buildProblem(now, targets);
+          const auto t0 = std::chrono::steady_clock::now();
+          asv::Plan plan;
+          try {
+            plan = ps->plugin->makePlan(pr);
+          } catch (const std::exception& e) {
+            plan = ps->follower.fallback(targets, std::string("plugin error: ") + e.what());
+          }
+          plan.compute_time = wallSeconds(t0);
+          if (ps->index == 0)
+            rec.addPlanTime(plan.compute_time);
+          ps->follower.acceptPlan(plan, now, targets, why);
+        }
+        double course = 0.0, speed = 0.0;
+        if (ps->follower.setpoint(course, speed)) {
+          sim.setSetpoint(v.name, course, speed);
+          rec.addSetpoint(now, v.name, course);
+        }
+      }
+    }
+    if (exchange_mode && now >= next_dssa - 1e-9) {
+      next_dssa += dssa_period;
+      // Fig. 1: every ship still under way takes part in one search phase, then steers its intention.
+      std::vector<asv::DssaAgent> active;
+      std::vector<std::mt19937_64> active_rngs;
+      std::vector<size_t> slot;
+      for (size_t a = 0; a < agents.size(); ++a) {
+        const asv::SimVessel& v = vs[static_cast<size_t>(agents[a].id())];
+        for (size_t b = 0; b < agents.size(); ++b)
+          if (vs[static_cast<size_t>(agents[b].id())].arrived)
+            agents[a].forget(agents[b].id());
+        if (v.arrived)
+          continue;
+        agents[a].setOwn(v.shipState(), agent_goals[a], now);
+        slot.push_back(a);
+      }
+      if (!slot.empty()) {
+        for (size_t a : slot) {
+          active.push_back(std::move(agents[a]));
+          active_rngs.push_back(rngs[a]);
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        exchange->run(active, active_rngs);
+        const double took = wallSeconds(t0);
+        if (isDssa(planner_of[0]) && !vs[0].arrived)
+          rec.addPlanTime(took);
+        for (size_t k2 = 0; k2 < slot.size(); ++k2) {
+          agents[slot[k2]] = std::move(active[k2]);
+          rngs[slot[k2]] = active_rngs[k2];
+          const asv::DssaIntention& in = agents[slot[k2]].intention();
+          const std::string& name = vs[static_cast<size_t>(agents[slot[k2]].id())].name;
+          sim.setSetpoint(name, in.course, in.speed);
+          rec.addSetpoint(now, name, in.course);
+        }
+      }
+    }
+    sim.step();
+    sample();
+    const auto& ev = sim.events();
+    for (; events_done < ev.size(); ++events_done)
+      rec.addEvent(ev[events_done]);
+    if (k % 200 == 0)
+      progress.update(run_index, std::min(1.0, static_cast<double>(k) / std::max<long>(1, steps)));
+  }
+  writeTrajectory();
+  rec.setWallTime(wallSeconds(wall0));
+  asv::RunResult r = rec.finish();
+  if (o.deterministic)
+    asv::zeroWallClock(r);
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parseArgs(argc, argv);
+  asv::Scenario sc;
+  try {
+    sc = asv::loadScenario(o.scenario);
+  } catch (const std::exception& e) {
+    std::cerr << "asv_batch: bad scenario: " << e.what() << "\n";
+    return 2;
+  }
+  std::string planner = o.planner_given ? o.planner : sc.own.planner;
+  if (planner.empty())
+    planner = "none";
+  const auto& known = asv::knownPlanners();
+  auto checkPlanner = [&](const std::string& p, const std::string& who) {
+    if (p == "none" || std::find(known.begin(), known.end(), p) != known.end())
+      return true;
+    std::string list;
+    for (const auto& k : known)
+      list += (list.empty() ? "" : ", ") + k;
+    std::cerr << "asv_batch: unknown planner '" << p << "' for " << who << " (known: " << list << ", none)\n";
+    return false;
+  };
+  if (!checkPlanner(planner, "the own ship"))
+    return 2;
+  for (const auto& t : sc.targets)
+    if (t.behaviour == asv::Behaviour::Planner && !t.planner.empty() && !checkPlanner(t.planner, t.name))
+      return 2;
+
+  std::unique_ptr<asv_planning::PluginLoader> loader;
+  try {
+    loader = std::make_unique<asv_planning::PluginLoader>();
+  } catch (const std::exception& e) {
+    std::cerr << "asv_batch: cannot create the plugin loader (source devel/setup.bash?): " << e.what()
+              << "\n";
+    return 2;
+  }
+
+  std::ofstream json_file;
+  std::ostream* out = &std::cout;
+  if (!o.json.empty()) {
+    json_file.open(o.json, std::ios::app);
+    if (!json_file) {
+      std::cerr << "asv_batch: cannot write " << o.json << "\n";
+      return 2;
+    }
+    out = &json_file;
+  }
+  Progress progress(!o.quiet && isatty(STDERR_FILENO), o.runs);
+  for (int r = 0; r < o.runs; ++r) {
+    const uint64_t seed = o.seed + static_cast<uint64_t>(r);
+    asv::RunResult result;
+    try {
+      result = runOnce(o, sc, planner, seed, *loader, progress, r);
+    } catch (const std::runtime_error& e) {
+      progress.clear();
+      const std::string what = e.what();
+      std::cerr << "asv_batch: " << what << "\n";
+      // A plugin that cannot be loaded is a usage error (unknown or unbuilt planner).
+      return what.find("cannot load planner") != std::string::npos ? 2 : 1;
+    } catch (const std::invalid_argument& e) {
+      progress.clear();
+      std::cerr << "asv_batch: bad configuration: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      progress.clear();
+      std::cerr << "asv_batch: " << e.what() << "\n";
+      return 1;
+    }
+    progress.clear();
+    *out << asv::toJson(result) << "\n";
+    out->flush();
+    if (!o.quiet)
+      std::cerr << asv::summaryLine(result) << "\n";
+  }
+  return 0;
+}

@@ -1,0 +1,210 @@
+#include "asv_sim/evaluator_node.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <xmlrpcpp/XmlRpcValue.h>
+#include <filesystem>
+
+namespace asv_sim {
+
+namespace {
+
+const std::set<std::string> kKnownParams = {"own_ship", "result",      "scenario",        "planner",
+                                            "seed",     "time_origin", "shutdown_at_end", "pretty"};
+
+// Flattens the ~evaluation tree into "a/b" keys with text values.
+void flatten(const XmlRpc::XmlRpcValue& v, const std::string& prefix, asv::ParamMap& out) {
+  auto& m = const_cast<XmlRpc::XmlRpcValue&>(v);
+  switch (v.getType()) {
+    case XmlRpc::XmlRpcValue::TypeStruct:
+      for (auto it = m.begin(); it != m.end(); ++it)
+        flatten(it->second, prefix.empty() ? it->first : prefix + "/" + it->first, out);
+      break;
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      out.set(prefix, static_cast<bool>(m) ? "true" : "false");
+      break;
+    case XmlRpc::XmlRpcValue::TypeInt:
+      out.set(prefix, std::to_string(static_cast<int>(m)));
+      break;
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      out.set(prefix, static_cast<double>(m));
+      break;
+    case XmlRpc::XmlRpcValue::TypeString:
+      out.set(prefix, static_cast<std::string>(m));
+      break;
+    default:
+      throw std::invalid_argument("evaluation/" + prefix + ": not a scalar");
+  }
+}
+
+asv::SimEvent::Type toCore(uint8_t type) {
+  switch (type) {
+    case asv_msgs::SimEvent::COLLISION:
+      return asv::SimEvent::Collision;
+    case asv_msgs::SimEvent::NEAR_MISS:
+      return asv::SimEvent::NearMiss;
+    default:
+      return asv::SimEvent::Arrival;
+  }
+}
+
+}  // namespace
+
+EvaluatorNodeParams loadEvaluatorParams(const ros::NodeHandle& pnh) {
+  EvaluatorNodeParams p;
+  pnh.param("own_ship", p.own_ship, p.own_ship);
+  pnh.param("result", p.result, p.result);
+  pnh.param("scenario", p.scenario, p.scenario);
+  pnh.param("planner", p.planner, p.planner);
+  pnh.param("seed", p.seed, p.seed);
+  pnh.param("time_origin", p.time_origin, p.time_origin);
+  pnh.param("shutdown_at_end", p.shutdown_at_end, p.shutdown_at_end);
+  pnh.param("pretty", p.pretty, p.pretty);
+  if (p.own_ship.empty() || p.seed < 0 || !std::isfinite(p.time_origin))
+    throw std::invalid_argument(
+        "evaluator_node: own_ship must be set, seed >= 0 (see config/evaluator_node.yaml)");
+  asv::ParamMap eval;
+  XmlRpc::XmlRpcValue tree;
+  if (pnh.getParam("evaluation", tree))
+    flatten(tree, "", eval);
+  p.evaluation = asv::EvaluationConfig::fromParams(eval);  // rejects unknown keys, validates
+  std::vector<std::string> names;
+  if (ros::param::getParamNames(names)) {
+    const std::string prefix = pnh.getNamespace() + "/";
+    for (const auto& n : names) {
+      if (n.compare(0, prefix.size(), prefix) != 0)
+        continue;
+      const std::string key = n.substr(prefix.size());
+      if (key.compare(0, 11, "evaluation/") == 0)
+        continue;
+      if (!kKnownParams.count(key))
+        throw std::invalid_argument("unknown parameter '" + n + "' (see asv_sim/config/evaluator_node.yaml)");
+    }
+  }
+  return p;
+}
+
+EvaluatorNode::EvaluatorNode(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : nh_(nh), pnh_(pnh), params_(loadEvaluatorParams(pnh)) {
+  if (!params_.scenario.empty())
+    scenario_ = std::make_unique<asv::Scenario>(asv::loadScenario(params_.scenario));
+  ships_sub_ = nh_.subscribe("sim/ships", 20, &EvaluatorNode::shipsCallback, this);
+  events_sub_ = nh_.subscribe("sim/events", 100, &EvaluatorNode::eventCallback, this);
+  plan_sub_ = nh_.subscribe(params_.own_ship + "/plan", 20, &EvaluatorNode::planCallback, this);
+  cmd_sub_ = nh_.subscribe(params_.own_ship + "/cmd", 50, &EvaluatorNode::cmdCallback, this);
+  wall_start_ = ros::WallTime::now();
+  ROS_INFO("evaluator_node: own ship '%s', result %s", params_.own_ship.c_str(),
+           params_.result.empty() ? "(not written)" : params_.result.c_str());
+}
+
+void EvaluatorNode::start(const asv_msgs::TargetArray& first) {
+  asv::RunInfo info;
+  if (scenario_) {
+    info = asv::RunInfo::fromScenario(*scenario_, "", static_cast<uint64_t>(params_.seed));
+    if (info.ships.front().name != params_.own_ship)
+      throw std::invalid_argument("own_ship '" + params_.own_ship + "' is not the scenario's own ship '" +
+                                  info.ships.front().name + "'");
+  } else {
+    info.scenario = "unknown";
+    info.seed = static_cast<uint64_t>(params_.seed);
+    info.ships.push_back({params_.own_ship, std::nullopt, ""});
+    for (const auto& t : first.targets)
+      if (t.id != params_.own_ship)
+        info.ships.push_back({t.id, std::nullopt, ""});
+  }
+  std::string planner = params_.planner;
+  if (planner.empty())
+    planner = scenario_ && !scenario_->own.planner.empty() ? scenario_->own.planner : "none";
+  info.planner = planner;
+  info.ships.front().planner = planner;
+  recorder_ = std::make_unique<asv::RunRecorder>(params_.evaluation, info);
+  for (const auto& e : pending_)
+    recorder_->addEvent(e);
+  pending_.clear();
+}
+
+void EvaluatorNode::shipsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
+  if (done_)
+    return;
+  try {
+    if (!recorder_)
+      start(*msg);
+  } catch (const std::exception& e) {
+    ROS_FATAL("evaluator_node: %s", e.what());
+    ros::shutdown();
+    return;
+  }
+  std::vector<asv::ShipSample> ships;
+  for (const auto& t : msg->targets) {
+    asv::ShipSample s;
+    s.name = t.id;
+    s.state.id = t.id;
+    s.state.position = {t.position.x, t.position.y};
+    s.state.course = t.course_over_ground;
+    s.state.speed = t.speed_over_ground;
+    s.state.heading = t.has_heading ? t.heading : t.course_over_ground;
+    s.state.length = t.length;
+    s.active = !arrived_.count(t.id);
+    ships.push_back(s);
+  }
+  recorder_->addSample(simTime(msg->header.stamp), ships);
+}
+
+void EvaluatorNode::eventCallback(const asv_msgs::SimEvent::ConstPtr& msg) {
+  if (done_)
+    return;
+  if (msg->type == asv_msgs::SimEvent::END) {
+    finish();
+    return;
+  }
+  asv::SimEvent e{toCore(msg->type), simTime(msg->header.stamp), msg->ship_a, msg->ship_b, msg->distance};
+  if (e.type == asv::SimEvent::Arrival)
+    arrived_.insert(e.a);
+  if (recorder_)
+    recorder_->addEvent(e);
+  else
+    pending_.push_back(e);
+}
+
+void EvaluatorNode::planCallback(const asv_msgs::Plan::ConstPtr& msg) {
+  if (recorder_ && !done_)
+    recorder_->addPlanTime(msg->compute_time);
+}
+
+void EvaluatorNode::cmdCallback(const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg) {
+  if (recorder_ && !done_)
+    recorder_->addSetpoint(simTime(msg->header.stamp), params_.own_ship, msg->course);
+}
+
+void EvaluatorNode::finish() {
+  done_ = true;
+  if (!recorder_) {
+    ROS_ERROR("evaluator_node: the run ended before any sim/ships message: no result");
+  } else {
+    recorder_->setWallTime((ros::WallTime::now() - wall_start_).toSec());
+    const asv::RunResult r = recorder_->finish();
+    std::istringstream table(asv::summaryTable(r));
+    for (std::string line; std::getline(table, line);)
+      ROS_INFO("evaluator_node: %s", line.c_str());
+    if (!params_.result.empty()) {
+      try {
+        const std::filesystem::path path(params_.result);
+        if (path.has_parent_path())
+          std::filesystem::create_directories(path.parent_path());
+        std::ofstream f(params_.result);
+        f << asv::toJson(r, params_.pretty) << "\n";
+        if (!f)
+          throw std::runtime_error("write failed");
+        ROS_INFO("evaluator_node: result written to %s", params_.result.c_str());
+      } catch (const std::exception& e) {
+        ROS_ERROR("evaluator_node: cannot write %s: %s", params_.result.c_str(), e.what());
+      }
+    }
+  }
+  if (params_.shutdown_at_end)
+    ros::shutdown();
+}
+
+}  // namespace asv_sim

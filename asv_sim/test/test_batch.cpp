@@ -1,0 +1,116 @@
+// asv_batch end to end: runs the built binary on a small crossing scenario and checks the JSON it
+// writes (ARCHITECTURE.md section 6), the exit codes of bad input, and determinism across two runs.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <regex>
+#include <string>
+
+namespace {
+
+struct Output {
+  std::string out;
+  int status = -1;
+};
+
+Output run(const std::string& args) {
+  Output o;
+  const std::string cmd = std::string(ASV_BATCH_BIN) + " " + args + " 2>/dev/null";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p)
+    return o;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0)
+    o.out.append(buf, n);
+  const int st = pclose(p);
+  o.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return o;
+}
+
+const std::string kScenario = std::string(ASV_SIM_TEST_DIR) + "/batch_crossing.yaml";
+
+double number(const std::string& json, const std::string& key) {
+  const std::regex re("\"" + key + "\": (-?[0-9.]+)");
+  std::smatch m;
+  if (!std::regex_search(json, m, re))
+    return NAN;
+  return std::stod(m[1]);
+}
+bool flag(const std::string& json, const std::string& key) {
+  return json.find("\"" + key + "\": true") != std::string::npos;
+}
+// The run result without its wall-clock values.
+std::string stripWallClock(std::string json) {
+  json = std::regex_replace(json, std::regex("\"wall_time_s\": [-0-9.enull]+"), "\"wall_time_s\": X");
+  json = std::regex_replace(json, std::regex("\"median\": [-0-9.enull]+, \"max\": [-0-9.enull]+"),
+                            "\"median\": X, \"max\": X");
+  return json;
+}
+
+}  // namespace
+
+TEST(AsvBatch, HelpAndBadInputExitCodes) {
+  const Output help = run("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--scenario"), std::string::npos);
+  EXPECT_EQ(run("").status, 2);                                               // no scenario
+  EXPECT_EQ(run("--scenario /nonexistent/scenario.yaml").status, 2);          // bad file
+  EXPECT_EQ(run("--scenario " + kScenario + " --planner nosuch").status, 2);  // unknown planner
+  EXPECT_EQ(run("--scenario " + kScenario + " --bogus").status, 2);
+}
+
+TEST(AsvBatch, NoPlannerSteersIntoTheCollisionAndSaysSo) {
+  // The target (3000, 3000) heading west at 5 m/s meets the own ship (north at 5 m/s) at (0, 3000) at
+  // t = 600 s: without a planner the run must report the collision.
+  const Output o = run("--scenario " + kScenario + " --planner none --seed 3 --quiet");
+  ASSERT_EQ(o.status, 0);
+  EXPECT_TRUE(flag(o.out, "collision"));
+  EXPECT_LT(number(o.out, "min_separation_m"), 100.0);
+  EXPECT_TRUE(flag(o.out, "safety_violation"));
+  EXPECT_NE(o.out.find("\"planner\": \"none\""), std::string::npos);
+  EXPECT_NE(o.out.find("\"seed\": 3"), std::string::npos);
+  EXPECT_NEAR(number(o.out, "colregs_score"), 0.0, 1e-9);
+}
+
+TEST(AsvBatch, PlannerAvoidsArrivesAndWritesEveryKey) {
+  const Output o = run("--scenario " + kScenario + " --seed 1 --quiet --deterministic");
+  ASSERT_EQ(o.status, 0) << o.out;
+  ASSERT_EQ(std::count(o.out.begin(), o.out.end(), '\n'), 1);  // one JSON line per run
+  for (const char* key :
+       {"scenario",         "planner",      "seed",           "collision",       "min_separation_m",
+        "safety_violation", "arrived",      "time_to_goal_s", "path_length_m",   "path_ratio",
+        "manoeuvres",       "targets",      "colregs_score",  "plan_time_ms",    "wall_time_s",
+        "encounter",        "own_role",     "min_distance_m", "tcpa_at_start_s", "dcpa_at_start_m",
+        "colregs_ok",       "colregs_notes"})
+    EXPECT_NE(o.out.find(std::string("\"") + key + "\": "), std::string::npos) << key;
+  EXPECT_NE(o.out.find("\"scenario\": \"batch_crossing\", \"planner\": \"ga\""), std::string::npos);
+  EXPECT_FALSE(flag(o.out, "collision"));
+  EXPECT_TRUE(flag(o.out, "arrived"));
+  EXPECT_GT(number(o.out, "min_separation_m"), 200.0);
+  // Start geometry of ts1, by hand: relative position (3000, 3000), relative velocity (-5, -5).
+  EXPECT_NEAR(number(o.out, "tcpa_at_start_s"), 600.0, 0.05);
+  EXPECT_NEAR(number(o.out, "dcpa_at_start_m"), 0.0, 0.05);
+  EXPECT_NE(o.out.find("\"encounter\": \"crossing\", \"own_role\": \"give_way\""), std::string::npos);
+  // Arrived within the 200 m acceptance radius of the 6000 m straight line: ratio >= 5800 / 6000.
+  EXPECT_GE(number(o.out, "path_ratio"), 5800.0 / 6000.0);
+  EXPECT_GE(number(o.out, "path_length_m"), 6000.0 - 200.0);
+  EXPECT_GT(number(o.out, "count"), 0.0);
+}
+
+TEST(AsvBatch, SameSeedGivesByteIdenticalJson) {
+  const Output a = run("--scenario " + kScenario + " --seed 5 --runs 2 --quiet");
+  const Output b = run("--scenario " + kScenario + " --seed 5 --runs 2 --quiet");
+  ASSERT_EQ(a.status, 0);
+  ASSERT_EQ(b.status, 0);
+  EXPECT_EQ(std::count(a.out.begin(), a.out.end(), '\n'), 2);
+  EXPECT_NE(a.out.find("\"seed\": 6"), std::string::npos);
+  EXPECT_EQ(stripWallClock(a.out), stripWallClock(b.out));
+  const Output d1 = run("--scenario " + kScenario + " --seed 5 --quiet --deterministic");
+  const Output d2 = run("--scenario " + kScenario + " --seed 5 --quiet --deterministic");
+  EXPECT_EQ(d1.out, d2.out);
+}

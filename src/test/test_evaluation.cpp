@@ -1,0 +1,335 @@
+// RunRecorder and the COLREGs score on scripted two-ship encounters whose geometry is worked out by
+// hand in the comments (own ship at the origin heading north at 5 m/s unless said otherwise).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "asv_core/evaluation.h"
+
+using namespace asv;
+
+namespace {
+
+struct Script {
+  Eigen::Vector2d own0{0.0, 0.0};
+  double own_speed = 5.0;
+  std::map<double, double> own_course_deg{{0.0, 0.0}};  // from time t: course
+  Eigen::Vector2d tgt0{5000.0, 5000.0};
+  double tgt_course_deg = 270.0, tgt_speed = 5.0;
+  double duration = 2000.0;
+};
+
+double courseAt(const std::map<double, double>& sched, double t) {
+  auto it = sched.upper_bound(t + 1e-9);
+  --it;
+  return degToRad(it->second);
+}
+
+// Kinematic ships sampled every second: the course of sample t is the one sailed from t to t + 1.
+RunRecorder record(const Script& s, const EvaluationConfig& cfg = {},
+                   const std::vector<SimEvent>& events = {}) {
+  RunInfo info;
+  info.scenario = "scripted";
+  info.planner = "test";
+  info.seed = 7;
+  info.ships = {{"own", std::nullopt, "test"}, {"ts1", std::nullopt, ""}};
+  RunRecorder rec(cfg, info);
+  Eigen::Vector2d po = s.own0, pt = s.tgt0;
+  const double ct = degToRad(s.tgt_course_deg);
+  for (int k = 0; k <= static_cast<int>(s.duration); ++k) {
+    const double t = k;
+    const double co = courseAt(s.own_course_deg, t);
+    ShipSample own, tgt;
+    own.name = "own";
+    own.state.position = po;
+    own.state.course = own.state.heading = co;
+    own.state.speed = s.own_speed;
+    own.course_setpoint = co;
+    tgt.name = "ts1";
+    tgt.state.position = pt;
+    tgt.state.course = tgt.state.heading = ct;
+    tgt.state.speed = s.tgt_speed;
+    rec.addSample(t, {own, tgt});
+    for (const auto& e : events)
+      if (std::fabs(e.time - t) < 0.5)
+        rec.addEvent(e);
+    po += courseSpeedToVelocity(co, s.own_speed);
+    pt += courseSpeedToVelocity(ct, s.tgt_speed);
+  }
+  return rec;
+}
+
+bool hasNote(const TargetResult& t, const std::string& prefix) {
+  for (const auto& n : t.notes)
+    if (n.compare(0, prefix.size(), prefix) == 0)
+      return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(Evaluation, SafetyScoreIsPiecewiseLinearBetweenTheRanges) {
+  // 1 nm preferred, 0.5 nm minimum (score 0.5), 0.1 nm near miss (score 0).
+  EXPECT_DOUBLE_EQ(safetyScore(5000.0, 1852.0, 926.0, 185.2, 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(safetyScore(1852.0, 1852.0, 926.0, 185.2, 0.5), 1.0);
+  EXPECT_NEAR(safetyScore(1389.0, 1852.0, 926.0, 185.2, 0.5), 0.75, 1e-12);
+  EXPECT_NEAR(safetyScore(926.0, 1852.0, 926.0, 185.2, 0.5), 0.5, 1e-12);
+  EXPECT_NEAR(safetyScore(555.6, 1852.0, 926.0, 185.2, 0.5), 0.25, 1e-12);
+  EXPECT_DOUBLE_EQ(safetyScore(185.2, 1852.0, 926.0, 185.2, 0.5), 0.0);
+  EXPECT_DOUBLE_EQ(safetyScore(10.0, 1852.0, 926.0, 185.2, 0.5), 0.0);
+}
+
+TEST(Evaluation, CleanEarlyStarboardGiveWayScoresFull) {
+  // Target from starboard: (5000, 5000) heading west at 5 m/s, collision at (0, 5000) at t = 1000 s
+  // (TCPA 1000 s, DCPA 0: risk at t = 0). Own turns 60 deg to starboard at t = 10 s, 7 km away.
+  // Afterwards: relative position (4950, 4950), relative velocity (-9.330, -2.5): DCPA =
+  // |4950 * -2.5 - 4950 * -9.330| / 9.659 = 3500 m > 1852 m, so safety 1; the own ship reaches the
+  // target's track at x = 8574 m when the target is at x = -4950 m: astern. No penalty.
+  Script s;
+  s.own_course_deg = {{0.0, 0.0}, {10.0, 60.0}};
+  const RunResult r = record(s).finish();
+  ASSERT_EQ(r.own.targets.size(), 1u);
+  const TargetResult& t = r.own.targets[0];
+  EXPECT_EQ(t.encounter, Encounter::CrossingGiveWay);
+  EXPECT_STREQ(roleName(t.role), "give_way");
+  EXPECT_TRUE(t.evaluated);
+  EXPECT_NEAR(t.tcpa_at_start, 1000.0, 1e-9);
+  EXPECT_NEAR(t.dcpa_at_start, 0.0, 1e-6);
+  EXPECT_GT(t.min_distance, 3499.0);
+  EXPECT_TRUE(t.colregs_ok);
+  EXPECT_DOUBLE_EQ(t.score, 1.0);
+  EXPECT_DOUBLE_EQ(r.own.colregs_score, 1.0);
+  EXPECT_FALSE(r.collision);
+  EXPECT_FALSE(r.safety_violation);
+  ASSERT_EQ(r.own.manoeuvres.size(), 1u);
+  EXPECT_DOUBLE_EQ(r.own.manoeuvres[0].time, 10.0);
+  EXPECT_NEAR(radToDeg(r.own.manoeuvres[0].course_change), 60.0, 1e-9);
+}
+
+TEST(Evaluation, PortTurnInHeadOnGetsTheRule14Penalty) {
+  // Head-on 10 km apart closing at 10 m/s. Own turns 40 deg to port at t = 100 s (9 km: early,
+  // apparent). Then relative position (3214, 9000), relative velocity (3.214, -8.830): DCPA 3081 m,
+  // safety 1. Only the port turn is penalised: score 1 x (1 - 0.5) = 0.5.
+  Script s;
+  s.tgt0 = {0.0, 10000.0};
+  s.tgt_course_deg = 180.0;
+  s.own_course_deg = {{0.0, 0.0}, {100.0, -40.0}};
+  const RunResult r = record(s).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_EQ(t.encounter, Encounter::HeadOn);
+  EXPECT_STREQ(encounterName(t.encounter), "head_on");
+  EXPECT_FALSE(t.colregs_ok);
+  EXPECT_TRUE(hasNote(t, "rule 14"));
+  EXPECT_FALSE(hasNote(t, "rule 8"));
+  EXPECT_FALSE(hasNote(t, "rule 16"));
+  EXPECT_NEAR(t.score, 0.5, 1e-12);
+  EXPECT_NEAR(r.own.colregs_score, 0.5, 1e-12);
+}
+
+TEST(Evaluation, StandOnShipThatTurnsEarlyGetsTheRule17Penalty) {
+  // Target from port: (-5000, 5000) heading east; own is stand-on. Own turns 40 deg to starboard at
+  // t = 10 s while the target is far from urgent (TCPA 990 s > 600 s). Afterwards the DCPA is
+  // |(-4950)(-3.830) - 4950 * 1.786| / 4.226 = 2394 m (safety 1, never urgent): score 0.5.
+  Script s;
+  s.tgt0 = {-5000.0, 5000.0};
+  s.tgt_course_deg = 90.0;
+  s.own_course_deg = {{0.0, 0.0}, {10.0, 40.0}};
+  const RunResult r = record(s).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_EQ(t.encounter, Encounter::CrossingStandOn);
+  EXPECT_STREQ(roleName(t.role), "stand_on");
+  EXPECT_TRUE(hasNote(t, "rule 17"));
+  EXPECT_NEAR(t.score, 0.5, 1e-12);
+}
+
+TEST(Evaluation, StandOnShipThatHoldsCourseAndSpeedIsNotPenalised) {
+  // Target from port at (-5000, 4000) heading east: relative position (-5000, 4000), relative velocity
+  // (5, -5): TCPA 900 s, DCPA |(-5000)(-5) - 4000 * 5| / 7.071 = 707.1 m (< 1852 m: risk). The own ship
+  // holds course and speed: no rule penalty. Safety: 707.1 m lies between r_nm 185.2 and r_min 926:
+  // 0.5 (707.1 - 185.2) / (926 - 185.2) = 0.352.
+  Script s;
+  s.tgt0 = {-5000.0, 4000.0};
+  s.tgt_course_deg = 90.0;
+  const RunResult r = record(s).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_EQ(t.encounter, Encounter::CrossingStandOn);
+  EXPECT_TRUE(t.colregs_ok);
+  const double dcpa = 5000.0 / std::sqrt(50.0);
+  EXPECT_NEAR(t.min_distance, dcpa, 0.5);
+  EXPECT_NEAR(t.score, 0.5 * (t.min_distance - 185.2) / (926.0 - 185.2), 1e-9);
+  EXPECT_TRUE(r.safety_violation);
+}
+
+TEST(Evaluation, TenDegreeAlterationGetsTheRule8Penalty) {
+  // The crossing of the clean case, but only 10 deg to starboard at t = 10 s. DCPA afterwards:
+  // relative velocity (-5.868, -4.924), |4950 * -4.924 - 4950 * -5.868| / 7.660 = 610 m; with the
+  // ranges set to 500/300/100 m the safety is 1, so the score is 1 - 0.3 (1 - 10/30) = 0.8.
+  Script s;
+  s.own_course_deg = {{0.0, 0.0}, {10.0, 10.0}};
+  EvaluationConfig cfg;
+  cfg.ranges_from_scenario = false;
+  cfg.r_pref_m = 500.0;
+  cfg.r_min_m = 300.0;
+  cfg.r_nm_m = 100.0;
+  const RunResult r = record(s, cfg).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_NEAR(t.min_distance, 610.0, 1.0);
+  EXPECT_TRUE(hasNote(t, "rule 8"));
+  EXPECT_FALSE(hasNote(t, "rule 16"));
+  EXPECT_FALSE(hasNote(t, "rule 15"));
+  EXPECT_NEAR(t.score, 0.8, 1e-9);
+}
+
+TEST(Evaluation, LateGiveWayGetsAProportionalRule16Penalty) {
+  // The crossing with a 60 deg starboard turn only at t = 800 s. Just before (t = 799 s): own at
+  // (0, 3995), target at (1005, 5000): range 1421.3 m, TCPA 2010 * 5 / 50 = 201 s. Earliness
+  // max(1421.3 / 3704, 201 / 480) = 0.41875: penalty 0.3 (1 - 0.41875) = 0.174375. With ranges
+  // 600/400/100 m the pass (DCPA 707 m) is safe: score 0.825625.
+  Script s;
+  s.own_course_deg = {{0.0, 0.0}, {800.0, 60.0}};
+  EvaluationConfig cfg;
+  cfg.ranges_from_scenario = false;
+  cfg.r_pref_m = 600.0;
+  cfg.r_min_m = 400.0;
+  cfg.r_nm_m = 100.0;
+  const RunResult r = record(s, cfg).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_TRUE(hasNote(t, "rule 16"));
+  EXPECT_FALSE(hasNote(t, "rule 8"));
+  EXPECT_NEAR(t.score, 1.0 - 0.3 * (1.0 - 201.0 / 480.0), 1e-9);
+}
+
+TEST(Evaluation, CrossingAheadOfTheStandOnShipGetsTheRule15Penalty) {
+  // Target from starboard at (3000, 3000) heading west at 2 m/s: relative velocity (-2, -5), TCPA
+  // (6000 + 15000) / 29 = 724 s, DCPA |3000 * -5 - 3000 * -2| / 5.385 = 1671 m: risk. Own holds north at
+  // 5 m/s and is on the target's track line (y = 3000) at t = 600 s; the first sample past it, t = 601 s,
+  // (or t = 600 s itself, by rounding) has the target 1798-1800 m away, ahead of it (< 3704 m).
+  Script s;
+  s.tgt0 = {3000.0, 3000.0};
+  s.tgt_speed = 2.0;
+  const RunResult r = record(s).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_EQ(t.encounter, Encounter::CrossingGiveWay);
+  double ahead = 0.0;
+  for (const auto& n : t.notes)
+    std::sscanf(n.c_str(), "rule 15: crossed %lf m ahead", &ahead);
+  EXPECT_GE(ahead, 1798.0);
+  EXPECT_LE(ahead, 1800.0);
+  EXPECT_TRUE(hasNote(t, "rule 16"));  // and it never acted
+  EXPECT_TRUE(hasNote(t, "rule 8"));
+}
+
+TEST(Evaluation, CollisionScoresZero) {
+  Script s;  // the crossing with no action: the ships meet at (0, 5000) at t = 1000 s
+  const RunResult r = record(s, {}, {{SimEvent::Collision, 1000.0, "own", "ts1", 0.0}}).finish();
+  EXPECT_TRUE(r.collision);
+  EXPECT_TRUE(r.own.collision);
+  EXPECT_DOUBLE_EQ(r.own.targets.at(0).score, 0.0);
+  EXPECT_DOUBLE_EQ(r.own.colregs_score, 0.0);
+  EXPECT_FALSE(r.own.targets.at(0).colregs_ok);
+  EXPECT_NEAR(r.own.min_separation, 0.0, 1e-6);
+  EXPECT_TRUE(r.safety_violation);
+}
+
+TEST(Evaluation, ManoeuvresAreConsolidatedOverTheWindow) {
+  RunInfo info;
+  info.scenario = "m";
+  info.ships = {{"own", std::nullopt, ""}};
+  RunRecorder rec({}, info);
+  ShipSample own;
+  own.name = "own";
+  own.state.course = 0.0;
+  own.state.speed = 5.0;
+  rec.addSample(0.0, {own});
+  rec.addSetpoint(0.0, "own", degToRad(2.0));      // below 5 deg: no manoeuvre
+  rec.addSetpoint(100.0, "own", degToRad(20.0));   // starts one ...
+  rec.addSetpoint(105.0, "own", degToRad(30.0));   // ... consolidated with this (within 30 s)
+  rec.addSetpoint(300.0, "own", degToRad(33.0));   // 3 deg: none
+  rec.addSetpoint(400.0, "own", degToRad(350.0));  // back 43 deg to port from 33
+  const RunResult r = rec.finish();
+  ASSERT_EQ(r.own.manoeuvres.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.own.manoeuvres[0].time, 100.0);
+  EXPECT_NEAR(radToDeg(r.own.manoeuvres[0].course_change), 30.0, 1e-9);
+  EXPECT_DOUBLE_EQ(r.own.manoeuvres[1].time, 400.0);
+  EXPECT_NEAR(radToDeg(r.own.manoeuvres[1].course_change), -40.0, 1e-9);
+}
+
+TEST(Evaluation, JsonIsDeterministicWithFixedKeysAndNullForUnknowns) {
+  Script s;
+  s.own_course_deg = {{0.0, 0.0}, {10.0, 60.0}};
+  RunRecorder a = record(s), b = record(s);
+  a.addPlanTime(0.002);
+  b.addPlanTime(0.002);
+  const std::string ja = toJson(a.finish()), jb = toJson(b.finish());
+  EXPECT_EQ(ja, jb);
+  EXPECT_EQ(toJson(a.finish(), true), toJson(b.finish(), true));
+  EXPECT_EQ(ja.find('\n'), std::string::npos);  // one line: JSON Lines
+  EXPECT_EQ(
+      ja.rfind("{\"scenario\": \"scripted\", \"planner\": \"test\", \"seed\": 7, \"collision\": false, ", 0),
+      0u);
+  // No goal, not arrived: time_to_goal_s and path_ratio are null, never NaN.
+  EXPECT_NE(ja.find("\"arrived\": false, \"time_to_goal_s\": null"), std::string::npos);
+  EXPECT_NE(ja.find("\"path_ratio\": null"), std::string::npos);
+  EXPECT_EQ(ja.find("nan"), std::string::npos);
+  EXPECT_EQ(ja.find("inf"), std::string::npos);
+  EXPECT_NE(ja.find("\"manoeuvres\": [{\"t_s\": 10.0, \"course_change_deg\": 60.0}]"), std::string::npos);
+  EXPECT_NE(ja.find("\"plan_time_ms\": {\"median\": 2.000, \"max\": 2.000, \"count\": 1}"),
+            std::string::npos);
+  // Key order of the whole object (ARCHITECTURE.md section 6).
+  size_t pos = 0;
+  for (const char* key : {"scenario", "planner", "seed", "collision", "min_separation_m", "safety_violation",
+                          "arrived", "time_to_goal_s", "path_length_m", "path_ratio", "manoeuvres", "targets",
+                          "colregs_score", "plan_time_ms", "wall_time_s"}) {
+    const size_t at = ja.find(std::string("\"") + key + "\":", pos);
+    ASSERT_NE(at, std::string::npos) << key;
+    pos = at;
+  }
+  for (const char* key : {"\"name\": \"ts1\"", "\"encounter\": \"crossing\"", "\"own_role\": \"give_way\"",
+                          "\"min_distance_m\"", "\"tcpa_at_start_s\": 1000.0", "\"dcpa_at_start_m\": 0.0",
+                          "\"colregs_ok\": true", "\"colregs_notes\": []"})
+    EXPECT_NE(ja.find(key), std::string::npos) << key;
+  RunResult z = a.finish();
+  z.wall_time = 1.234;
+  zeroWallClock(z);
+  EXPECT_NE(toJson(z).find("\"wall_time_s\": 0.000"), std::string::npos);
+}
+
+TEST(Evaluation, ArrivalGivesTimeToGoalAndPathRatio) {
+  RunInfo info;
+  info.scenario = "a";
+  info.ships = {{"own", Eigen::Vector2d(0.0, 1000.0), ""}};
+  RunRecorder rec({}, info);
+  for (int k = 0; k <= 200; ++k) {
+    ShipSample own;
+    own.name = "own";
+    own.state.position = {0.0, 5.0 * k};
+    own.state.speed = 5.0;
+    rec.addSample(k, {own});
+  }
+  rec.addEvent({SimEvent::Arrival, 200.0, "own", "", 0.0});
+  const RunResult r = rec.finish();
+  EXPECT_TRUE(r.own.arrived);
+  EXPECT_DOUBLE_EQ(r.own.time_to_goal, 200.0);
+  EXPECT_NEAR(r.own.path_length, 1000.0, 1e-9);
+  EXPECT_NEAR(r.own.path_ratio, 1.0, 1e-12);
+  EXPECT_TRUE(std::isnan(r.own.min_separation));
+  EXPECT_DOUBLE_EQ(r.own.colregs_score, 1.0);
+}
+
+TEST(Evaluation, ConfigValidatesAndReadsParams) {
+  EvaluationConfig bad;
+  bad.r_min_m = 5000.0;
+  bad.ranges_from_scenario = false;
+  EXPECT_THROW(bad.validate(), std::invalid_argument);
+  ParamMap p;
+  p.set("apparent_course_deg", 20.0);
+  p.set("hu/t_safe_s", 300.0);
+  const EvaluationConfig c = EvaluationConfig::fromParams(p);
+  EXPECT_DOUBLE_EQ(c.apparent_course_deg, 20.0);
+  EXPECT_DOUBLE_EQ(c.hu.t_safe_s, 300.0);
+  ParamMap typo;
+  typo.set("apparent_course", 20.0);
+  EXPECT_THROW(EvaluationConfig::fromParams(typo), std::invalid_argument);
+}
