@@ -38,7 +38,8 @@ const std::set<std::string> kKnownParams = {"planner",
                                             "max_speed",
                                             "min_speed",
                                             "turn_rate",
-                                            "turn_delay"};
+                                            "turn_delay",
+                                            "distributed"};
 
 // Flattens a rosparam tree into "a/b" keys with text values.
 void flatten(const XmlRpc::XmlRpcValue& v, const std::string& prefix, asv::ParamMap& out) {
@@ -112,8 +113,8 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
       if (n.compare(0, prefix.size(), prefix) != 0)
         continue;
       const std::string key = n.substr(prefix.size());
-      if (key.compare(0, p.planner.size() + 1, p.planner + "/") == 0)
-        continue;
+      if (key.compare(0, p.planner.size() + 1, p.planner + "/") == 0 || key.compare(0, 9, "exchange/") == 0)
+        continue;  // the plugin's own subtree; ~exchange/ is DssaRosAgent's (it checks its keys)
       if (!kKnownParams.count(key))
         throw std::invalid_argument("unknown parameter '" + n +
                                     "' (see asv_planning/config/planner_node.yaml)");
@@ -136,10 +137,32 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
       p.cruise_speed = ship->speed;
     plugin_params = sc.planner_params.sub(p.planner);
   }
+  if (p.planner.empty() && !p.scenario.empty()) {
+    // No planner given: the scenario's choice for this ship.
+    const asv::Scenario sc = asv::loadScenario(p.scenario);
+    const asv::ScenarioShip* ship = sc.own.name == p.ship ? &sc.own : nullptr;
+    for (const auto& t : sc.targets)
+      if (t.name == p.ship)
+        ship = &t;
+    if (ship)
+      p.planner = ship->planner;
+    plugin_params = sc.planner_params.sub(p.planner);
+  }
+  if (p.planner.empty() || p.planner == "none") {
+    ROS_INFO("planner_node: no planner for ship '%s': it steers straight for its goal", p.ship.c_str());
+    return;
+  }
   XmlRpc::XmlRpcValue tree;
   if (pnh.getParam(p.planner, tree))
     flatten(tree, "", plugin_params);
   plugin_ = loader_.load(p.planner, plugin_params);
+  if (DssaRosAgent::wanted(p.planner, pnh)) {  // distributed DSSA: the agent drives cmd, not the plugin
+    dssa_ =
+        std::make_unique<DssaRosAgent>(nh_, pnh_, DssaRosAgent::configOf(*plugin_),
+                                       DssaRosOptions{p.ship, p.frame_id, p.has_goal, p.goal, p.cruise_speed,
+                                                      p.limits.min_speed, p.limits.max_speed, p.seed});
+    return;
+  }
 
   odom_sub_ = nh_.subscribe("odom", 10, &PlannerNode::odomCallback, this);
   risk_sub_ = nh_.subscribe("risk", 10, &PlannerNode::riskCallback, this);

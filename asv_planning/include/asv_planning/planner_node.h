@@ -20,6 +20,7 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 
+#include "asv_planning/dssa_ros_agent.h"
 #include "asv_planning/plugin_loader.h"
 
 namespace asv_planning {
@@ -88,6 +89,8 @@ private:
   uint64_t replans_ = 0, fallbacks_ = 0, overruns_ = 0, seq_ = 0;
   double last_compute_ = 0.0, max_compute_ = 0.0;
   std::string last_reason_;
+  std::unique_ptr<DssaRosAgent>
+      dssa_;  // distributed DSSA/DSSA+ (~distributed): drives cmd instead of the plugin
 };
 
 }  // namespace asv_planning
