@@ -52,7 +52,9 @@ DssaExchangeParams DssaExchangeParams::load(const ros::NodeHandle& pnh) {
 }
 
 bool DssaRosAgent::wanted(const std::string& planner, const ros::NodeHandle& pnh) {
-  bool distributed = true;
+  // Off by default: an agent sees only ships that exchange intentions, so against ordinary traffic
+  // (AIS/radar targets) the single-ship plugin is the safe choice. agents.launch turns it on.
+  bool distributed = false;
   pnh.param("distributed", distributed, distributed);
   return distributed && (planner == "dssa" || planner == "dssa_plus");
 }

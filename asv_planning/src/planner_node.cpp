@@ -39,7 +39,10 @@ const std::set<std::string> kKnownParams = {"planner",
                                             "min_speed",
                                             "turn_rate",
                                             "turn_delay",
-                                            "distributed"};
+                                            "distributed",
+                                            "min_separation",
+                                            "stand_on_policy",
+                                            "risk_clear_time"};
 
 // Flattens a rosparam tree into "a/b" keys with text values.
 void flatten(const XmlRpc::XmlRpcValue& v, const std::string& prefix, asv::ParamMap& out) {
@@ -94,6 +97,9 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   get(pnh, "min_speed", p.limits.min_speed);
   get(pnh, "turn_rate", p.limits.turn_rate);
   get(pnh, "turn_delay", p.limits.turn_delay);
+  get(pnh, "min_separation", p.min_separation);
+  get(pnh, "stand_on_policy", p.stand_on_policy);
+  get(pnh, "risk_clear_time", p.risk_clear_time);
   if (pnh.hasParam("goal_x") || pnh.hasParam("goal_y")) {
     if (!pnh.getParam("goal_x", p.goal.x()) || !pnh.getParam("goal_y", p.goal.y()))
       throw std::invalid_argument("give both goal_x and goal_y (metres, map frame)");
@@ -135,6 +141,8 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
     }
     if (p.cruise_speed <= 0.0)
       p.cruise_speed = ship->speed;
+    if (p.min_separation <= 0.0)
+      p.min_separation = sc.min_separation;  // the scenario's safety.min_separation_m
     plugin_params = sc.planner_params.sub(p.planner);
   }
   if (p.planner.empty() && !p.scenario.empty()) {
@@ -163,6 +171,31 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
                                                       p.limits.min_speed, p.limits.max_speed, p.seed});
     return;
   }
+
+  if (p.cruise_speed > p.limits.max_speed) {
+    ROS_WARN("planner_node: cruise speed %.1f m/s above max_speed %.1f m/s: max_speed raised to it",
+             p.cruise_speed, p.limits.max_speed);
+    p.limits.max_speed = p.cruise_speed;
+  }
+  asv::PlanFollowerConfig fc;
+  fc.cruise_speed = p.cruise_speed;
+  fc.replan_period = p.replan_period;
+  fc.min_replan_interval = p.min_replan_interval;
+  fc.time_budget = p.time_budget;
+  fc.waypoint_acceptance = p.waypoint_acceptance;
+  fc.fallback_speed_factor = p.fallback_speed_factor;
+  fc.extremis_range = p.extremis_range;
+  fc.plan_clearance = p.plan_clearance;
+  fc.prediction_horizon = p.prediction_horizon;
+  fc.seed = p.seed;
+  fc.limits = p.limits;
+  fc.min_separation = p.min_separation;
+  fc.stand_on_policy = p.stand_on_policy;
+  fc.risk_clear_time = p.risk_clear_time;
+  follower_ = std::make_unique<asv::PlanFollower>(fc);  // validates: throws on a bad value
+  if (p.has_goal)
+    follower_->setGoal(p.goal);
+  follower_->setObstacles(obstacles_);
 
   odom_sub_ = nh_.subscribe("odom", 10, &PlannerNode::odomCallback, this);
   risk_sub_ = nh_.subscribe("risk", 10, &PlannerNode::riskCallback, this);
@@ -194,8 +227,7 @@ void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
   s.heading = asv::yawToCourse(yaw);
   s.speed = std::hypot(ve, vn);
   s.course = s.speed > 0.01 ? asv::courseOf({ve, vn}) : s.heading;
-  if (!own_ && params_.cruise_speed <= 0.0)
-    params_.cruise_speed = std::max(0.5, s.speed);
+  follower_->updateOwn(s);
   own_ = s;
 }
 
@@ -211,154 +243,58 @@ void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) 
     return;
   params_.goal = {msg->pose.position.x, msg->pose.position.y};
   params_.has_goal = true;
-  have_plan_ = false;  // replan towards the new goal
+  if (follower_)
+    follower_->setGoal(params_.goal);  // replans towards the new goal
 }
 
-asv::PlanningProblem PlannerNode::buildProblem() const {
-  asv::PlanningProblem pr;
-  pr.time = ros::Time::now().toSec();
-  pr.own = *own_;
-  pr.own.speed = std::max(pr.own.speed, params_.cruise_speed);  // plan for the cruising speed
-  pr.limits = params_.limits;
-  pr.goal =
-      params_.has_goal ? params_.goal : own_->position + asv::courseSpeedToVelocity(own_->course, 20000.0);
-  pr.obstacles = obstacles_;
-  pr.seed = static_cast<uint64_t>(params_.seed) + replans_;
-  pr.time_budget = params_.time_budget;
+std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
+  // The tracked targets with their risk picture; stale messages give nothing (the plan is then made
+  // on what the ship knows: no targets).
+  std::vector<asv::PlannerTarget> out;
   const ros::Time now = ros::Time::now();
   std::map<std::string, const asv_msgs::TargetRisk*> risk_by_id;
   if (risk_ && (now - risk_->header.stamp).toSec() < params_.stale_after)
     for (const auto& r : risk_->targets)
       risk_by_id[r.target_id] = &r;
-  if (targets_ && (now - targets_->header.stamp).toSec() < params_.stale_after) {
-    for (const auto& t : targets_->targets) {
-      if (t.id == params_.ship ||
-          !asv::allFinite({t.position.x, t.position.y, t.course_over_ground, t.speed_over_ground}))
-        continue;
-      asv::PlannerTarget pt;
-      pt.state.id = t.id;
-      pt.state.position = {t.position.x, t.position.y};
-      pt.state.course = t.course_over_ground;
-      pt.state.speed = t.speed_over_ground;
-      pt.state.heading = t.has_heading ? t.heading : t.course_over_ground;
-      pt.state.length = t.length;
-      auto it = risk_by_id.find(t.id);
-      if (it != risk_by_id.end()) {
-        const asv_msgs::TargetRisk& r = *it->second;
-        pt.risk = static_cast<asv::RiskLevel>(r.risk_level);
-        pt.compliant = r.compliant;
-        pt.encounter = static_cast<asv::Encounter>(r.encounter);
-        pt.role = static_cast<asv::OwnRole>(r.own_role);
-        pt.cri = r.cri;
-        pt.tcpa = r.tcpa;
-        pt.dcpa = r.dcpa;
-      }
-      pr.targets.push_back(pt);
+  if (!targets_ || (now - targets_->header.stamp).toSec() >= params_.stale_after)
+    return out;
+  for (const auto& t : targets_->targets) {
+    if (t.id == params_.ship ||
+        !asv::allFinite({t.position.x, t.position.y, t.course_over_ground, t.speed_over_ground}))
+      continue;
+    asv::PlannerTarget pt;
+    pt.state.id = t.id;
+    pt.state.position = {t.position.x, t.position.y};
+    pt.state.course = t.course_over_ground;
+    pt.state.speed = t.speed_over_ground;
+    pt.state.heading = t.has_heading ? t.heading : t.course_over_ground;
+    pt.state.length = t.length;
+    auto it = risk_by_id.find(t.id);
+    if (it != risk_by_id.end()) {
+      const asv_msgs::TargetRisk& r = *it->second;
+      pt.risk = static_cast<asv::RiskLevel>(r.risk_level);
+      pt.compliant = r.compliant;
+      pt.encounter = static_cast<asv::Encounter>(r.encounter);
+      pt.role = static_cast<asv::OwnRole>(r.own_role);
+      pt.cri = r.cri;
+      pt.tcpa = r.tcpa;
+      pt.dcpa = r.dcpa;
     }
+    out.push_back(pt);
   }
-  return pr;
+  return out;
 }
 
-asv::Plan PlannerNode::fallback(const std::string& why) const {
-  asv::Plan f;
-  f.status = asv::PlanStatus::Fallback;
-  f.course_setpoint = own_->course;
-  f.speed_setpoint = params_.cruise_speed * params_.fallback_speed_factor;
-  f.message = "fallback (" + why + "): hold course, slow to " +
-              std::to_string(params_.fallback_speed_factor) + " of speed";
-  if (risk_)
-    for (const auto& r : risk_->targets)
-      if (r.risk_level == asv_msgs::TargetRisk::RISK_URGENT && r.range < params_.extremis_range) {
-        // In extremis (Rule 17(b), Rule 2(b)): hard to starboard at full speed.
-        f.course_setpoint = asv::wrapTwoPi(own_->course + asv::kPi / 2);
-        f.speed_setpoint = params_.cruise_speed;
-        f.message = "fallback (" + why + "): in extremis with " + r.target_id + ", hard starboard";
-        break;
-      }
-  return f;
-}
-
-double PlannerNode::predictedClearance() const {
-  // The rest of the current plan flown at its speed from where the ship is now, against every target
-  // holding its course and speed: the smallest distance over the next `prediction_horizon`.
-  if (!own_ || !targets_)
-    return 1e12;
-  std::vector<Eigen::Vector2d> route{own_->position};
-  for (size_t i = wp_index_; i < plan_.waypoints.size(); ++i)
-    route.push_back(plan_.waypoints[i].position);
-  if (plan_.waypoints.size() < 2 || plan_.status == asv::PlanStatus::Fallback)
-    route.push_back(own_->position + asv::courseSpeedToVelocity(course_sp_, 1e5));
-  const double speed = std::max(0.1, speed_sp_ > 0.0 ? speed_sp_ : params_.cruise_speed);
-  const double dt = 5.0;
-  double best = 1e12;
-  size_t leg = 1;
-  Eigen::Vector2d p = route[0];
-  for (double t = 0.0; t <= params_.prediction_horizon && leg < route.size(); t += dt) {
-    for (const auto& tg : targets_->targets) {
-      if (tg.id == params_.ship)
-        continue;
-      const Eigen::Vector2d q(tg.position.x + tg.velocity.x * t, tg.position.y + tg.velocity.y * t);
-      best = std::min(best, (q - p).norm());
-    }
-    double step = speed * dt;
-    while (step > 0.0 && leg < route.size()) {
-      const Eigen::Vector2d d = route[leg] - p;
-      if (d.norm() <= step) {
-        step -= d.norm();
-        p = route[leg++];
-      } else {
-        p += d.normalized() * step;
-        step = 0.0;
-      }
-    }
-  }
-  return best;
-}
-
-bool PlannerNode::replanNeeded(std::string& why) {
-  const ros::Time now = ros::Time::now();
-  if (!have_plan_)
-    return why = "first plan", true;
-  const double since = (now - last_plan_time_).toSec();
-  if (since < params_.min_replan_interval)
-    return false;
-  if (risk_) {
-    for (const auto& r : risk_->targets) {
-      auto it = known_levels_.find(r.target_id);
-      if (r.risk_level == 0 && it != known_levels_.end()) {
-        known_levels_.erase(it);  // the risk has cleared: a new one later is news again
-        continue;
-      }
-      const uint8_t before = it == known_levels_.end() ? 0 : it->second;
-      // Only rises replan: a level that falls (or flickers with sensor noise round a threshold) would
-      // make the ship dither between plans instead of committing to one.
-      if (r.risk_level > before) {
-        why = "risk of " + r.target_id + " " + std::to_string(before) + " -> " + std::to_string(r.risk_level);
-        return true;
-      }
-    }
-  }
-  // A plan is kept while it stays safe: the rest of it, flown from here, must keep every target beyond
-  // plan_clearance. Periodic replanning of a safe plan would only make the ship weave.
-  const double clearance = predictedClearance();
-  if (clearance < params_.plan_clearance) {
-    why = "plan predicted to pass within " + std::to_string(static_cast<int>(clearance)) + " m";
-    return true;
-  }
-  if (since >= params_.replan_period && plan_.status != asv::PlanStatus::Ok)
-    return why = "periodic (last plan not ok)", true;
-  return false;
-}
-
-void PlannerNode::replan(const std::string& why) {
-  const asv::PlanningProblem pr = buildProblem();
+void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets) {
+  const double now = ros::Time::now().toSec();
+  const asv::PlanningProblem pr = follower_->buildProblem(now, targets);
   const ros::WallTime start = ros::WallTime::now();
   asv::Plan plan;
   try {
     plan = plugin_->makePlan(pr);
   } catch (const std::exception& e) {
     ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), e.what());
-    plan = fallback(std::string("plugin error: ") + e.what());
+    plan = follower_->fallback(targets, std::string("plugin error: ") + e.what());
   }
   last_compute_ = (ros::WallTime::now() - start).toSec();
   max_compute_ = std::max(max_compute_, last_compute_);
@@ -368,35 +304,24 @@ void PlannerNode::replan(const std::string& why) {
     ROS_WARN_THROTTLE(5.0, "planner_node: '%s' took %.3f s (budget %.3f s)", params_.planner.c_str(),
                       last_compute_, params_.time_budget);
   }
-  if (plan.status == asv::PlanStatus::NoSolution)
-    plan = fallback("no solution: " + plan.message);
-  if (plan.status == asv::PlanStatus::Fallback)
-    ++fallbacks_;
-  plan_ = plan;
-  have_plan_ = true;
-  wp_index_ = 1;
-  last_plan_time_ = ros::Time::now();
-  plan_stamp_ = last_plan_time_;
-  ++replans_;
+  const asv::Plan& in_force = follower_->acceptPlan(std::move(plan), now, targets, why);
+  plan_stamp_ = ros::Time::now();
   last_reason_ = why;
-  if (risk_)
-    for (const auto& r : risk_->targets) {
-      uint8_t& known = known_levels_[r.target_id];
-      known = std::max(known, r.risk_level);
-    }
   ROS_INFO("planner_node: %s plan (%s) in %.1f ms: course %.1f deg, speed %.1f kn, %zu waypoints: %s",
-           asv::toString(plan.status), why.c_str(), last_compute_ * 1e3, asv::radToDeg(plan.course_setpoint),
-           asv::mpsToKnots(plan.speed_setpoint), plan.waypoints.size(), plan.message.c_str());
+           asv::toString(in_force.status), why.c_str(), last_compute_ * 1e3,
+           asv::radToDeg(in_force.course_setpoint), asv::mpsToKnots(in_force.speed_setpoint),
+           in_force.waypoints.size(), in_force.message.c_str());
   publishPlan();
 }
 
 void PlannerNode::publishPlan() {
+  const asv::Plan& plan = follower_->plan();
   asv_msgs::Plan m;
   m.header.stamp = plan_stamp_;
   m.header.frame_id = params_.frame_id;
   m.ship = params_.ship;
   m.planner = params_.planner;
-  m.status = static_cast<uint8_t>(plan_.status);
+  m.status = static_cast<uint8_t>(plan.status);
   nav_msgs::Path path;
   path.header = m.header;
   visualization_msgs::MarkerArray markers;
@@ -407,9 +332,9 @@ void PlannerNode::publishPlan() {
   line.pose.orientation.w = 1.0;
   line.scale.x = 15.0;
   line.color.a = 1.0;
-  line.color.g = plan_.status == asv::PlanStatus::Ok ? 1.0f : 0.3f;
-  line.color.r = plan_.status == asv::PlanStatus::Ok ? 0.2f : 1.0f;
-  for (const auto& w : plan_.waypoints) {
+  line.color.g = plan.status == asv::PlanStatus::Ok ? 1.0f : 0.3f;
+  line.color.r = plan.status == asv::PlanStatus::Ok ? 0.2f : 1.0f;
+  for (const auto& w : plan.waypoints) {
     asv_msgs::PlanWaypoint pw;
     pw.position.x = w.position.x();
     pw.position.y = w.position.y();
@@ -427,11 +352,11 @@ void PlannerNode::publishPlan() {
     path.poses.push_back(ps);
     line.points.push_back(pw.position);
   }
-  m.course_setpoint = plan_.course_setpoint;
-  m.speed_setpoint = plan_.speed_setpoint;
-  m.cost = std::isfinite(plan_.cost) ? plan_.cost : 0.0;
-  m.compute_time = plan_.compute_time;
-  m.message = plan_.message;
+  m.course_setpoint = plan.course_setpoint;
+  m.speed_setpoint = plan.speed_setpoint;
+  m.cost = std::isfinite(plan.cost) ? plan.cost : 0.0;
+  m.compute_time = plan.compute_time;
+  m.message = plan.message;
   plan_pub_.publish(m);
   path_pub_.publish(path);
   if (line.points.size() >= 2)
@@ -440,33 +365,14 @@ void PlannerNode::publishPlan() {
 }
 
 void PlannerNode::publishSetpoint() {
-  if (!have_plan_ || !own_)
+  double course = 0.0, speed = 0.0;
+  if (!follower_->setpoint(course, speed))
     return;
-  const Eigen::Vector2d p = own_->position;
-  double course = plan_.course_setpoint, speed = plan_.speed_setpoint;
-  const auto& wps = plan_.waypoints;
-  if (plan_.status != asv::PlanStatus::Fallback && wps.size() >= 2) {
-    while (wp_index_ < wps.size() && (wps[wp_index_].position - p).norm() < params_.waypoint_acceptance)
-      ++wp_index_;
-    if (wp_index_ < wps.size()) {
-      course = asv::courseOf(wps[wp_index_].position - p);
-      if (wps[wp_index_].speed > 0.0)
-        speed = wps[wp_index_].speed;
-    } else if (params_.has_goal) {
-      course = asv::courseOf(params_.goal - p);  // past the plan: back to the goal
-    }
-  }
-  if (!(speed > 0.0) && plan_.status != asv::PlanStatus::Fallback)
-    speed = params_.cruise_speed;
-  if (!std::isfinite(course) || !std::isfinite(speed))
-    return;
-  course_sp_ = asv::wrapTwoPi(course);
-  speed_sp_ = std::clamp(speed, 0.0, params_.limits.max_speed);
   asv_msgs::CourseSpeedSetpoint sp;
   sp.header.stamp = ros::Time::now();
   sp.header.frame_id = params_.frame_id;
-  sp.course = course_sp_;
-  sp.speed = speed_sp_;
+  sp.course = course;
+  sp.speed = speed;
   cmd_pub_.publish(sp);
 }
 
@@ -476,28 +382,28 @@ void PlannerNode::timerCallback(const ros::TimerEvent&) {
     return;
   }
   std::string why;
-  if (replanNeeded(why))
-    replan(why);
+  const std::vector<asv::PlannerTarget> targets = targetsNow();
+  if (follower_->replanNeeded(ros::Time::now().toSec(), targets, why))
+    replan(why, targets);
   publishSetpoint();
   updater_.update();
 }
 
 void PlannerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("planner", params_.planner);
-  stat.add("replans", replans_);
-  stat.add("fallbacks", fallbacks_);
+  stat.add("replans", follower_->replans());
+  stat.add("fallbacks", follower_->fallbacks());
   stat.add("budget overruns", overruns_);
   stat.add("last compute time [s]", last_compute_);
   stat.add("max compute time [s]", max_compute_);
   stat.add("last replan reason", last_reason_);
-  stat.add("course set-point [deg]", asv::radToDeg(course_sp_));
-  stat.add("speed set-point [m/s]", speed_sp_);
-  if (have_plan_ && plan_.status == asv::PlanStatus::Fallback)
-    stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "fallback: " + plan_.message);
+  const asv::Plan& plan = follower_->plan();
+  if (follower_->havePlan() && plan.status == asv::PlanStatus::Fallback)
+    stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "fallback: " + plan.message);
   else if (overruns_ > 0)
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "plugin overran its time budget");
   else
-    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, have_plan_ ? "planning" : "waiting");
+    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, follower_->havePlan() ? "planning" : "waiting");
 }
 
 }  // namespace asv_planning

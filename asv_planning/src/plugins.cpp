@@ -24,25 +24,11 @@ asv::Plan AlgorithmPlugin::makePlan(const asv::PlanningProblem& problem) {
 }
 
 AcoPlugin::AcoPlugin() : AlgorithmPlugin(std::make_unique<asv::AcoPlanner>()) {}
-namespace {
-// DSSA's paper runs in its own units (800 x 800 area, TimeWindow 20, detection range 500). At sea:
-// a 10-minute prediction window, intentions exchanged within 6 nm, "collide" below 0.5 nm, a search
-// step of 10 s, speed changes of up to 4 m/s (about 8 kn, the paper's range) in 1 m/s steps.
-asv::ParamMap dssaSeaDefaults() {
-  asv::ParamMap p;
-  p.set("time_window", 600.0);
-  p.set("detection_range", 11112.0);
-  p.set("collision_distance", 926.0);
-  p.set("time_step", 10.0);
-  p.set("speed_change_max", 4.0);
-  p.set("speed_change_step", 1.0);
-  return p;
-}
-}  // namespace
-
-DssaPlugin::DssaPlugin() : AlgorithmPlugin(std::make_unique<asv::DssaPlanner>("dssa"), dssaSeaDefaults()) {}
+// DSSA's paper runs in its own units; the plugins start from the sea-scale defaults of asv_core.
+DssaPlugin::DssaPlugin()
+    : AlgorithmPlugin(std::make_unique<asv::DssaPlanner>("dssa"), asv::DssaConfig::seaDefaults()) {}
 DssaPlusPlugin::DssaPlusPlugin()
-    : AlgorithmPlugin(std::make_unique<asv::DssaPlanner>("dssa_plus"), dssaSeaDefaults()) {}
+    : AlgorithmPlugin(std::make_unique<asv::DssaPlanner>("dssa_plus"), asv::DssaConfig::seaDefaults()) {}
 MopsoPlugin::MopsoPlugin() : AlgorithmPlugin(std::make_unique<asv::MopsoPlanner>()) {}
 GaPlugin::GaPlugin() : AlgorithmPlugin(std::make_unique<asv::GaPlanner>()) {}
 

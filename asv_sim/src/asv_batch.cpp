@@ -145,21 +145,9 @@ bool isDssa(const std::string& p) {
   return p == "dssa" || p == "dssa_plus";
 }
 
-// The dssa plugins' sea-scale defaults (asv_planning/src/plugins.cpp, dssaSeaDefaults): the agents of
-// the in-process exchange must negotiate with the same parameters as the plugin.
-asv::ParamMap dssaSeaDefaults() {
-  asv::ParamMap p;
-  p.set("time_window", 600.0);
-  p.set("detection_range", 11112.0);
-  p.set("collision_distance", 926.0);
-  p.set("time_step", 10.0);
-  p.set("speed_change_max", 4.0);
-  p.set("speed_change_step", 1.0);
-  return p;
-}
-
 asv::DssaConfig dssaConfig(const std::string& planner, const asv::ParamMap& scenario_params) {
-  asv::ParamMap p = dssaSeaDefaults();
+  // The plugins' sea-scale defaults: the agents of the in-process exchange negotiate like the plugin.
+  asv::ParamMap p = asv::DssaConfig::seaDefaults();
   p.set("preset", planner);
   const asv::ParamMap own = scenario_params.sub(planner);
   for (const auto& kv : own.values())
@@ -277,6 +265,7 @@ asv::RunResult runOnce(const Options& o, const asv::Scenario& sc, const std::str
     fc.time_budget = o.time_budget;
     fc.seed = static_cast<int>(seed);
     fc.cruise_speed = vs[i].cruise_speed;
+    fc.min_separation = sc.min_separation;
     auto ps = std::make_unique<PluginShip>(PluginShip{i, p, loader.load(p, sc.planner_params.sub(p)),
                                                       asv::PlanFollower(fc), asv::RiskAssessor()});
     if (vs[i].goal)

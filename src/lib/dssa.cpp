@@ -47,9 +47,22 @@ void DssaConfig::validate() const {
   require(std::isfinite(ref_speed), "ref_speed", "must be finite");
 }
 
+ParamMap DssaConfig::seaDefaults() {
+  ParamMap p;
+  p.set("time_window", 600.0);
+  p.set("detection_range", 11112.0);
+  p.set("collision_distance", 926.0);
+  p.set("time_step", 10.0);
+  p.set("speed_change_max", 4.0);
+  p.set("speed_change_step", 1.0);
+  p.set("colregs", "true");
+  return p;
+}
+
 DssaConfig DssaConfig::fromParams(const ParamMap& params) {
   DssaConfig c = preset(params.getString("preset", "dssa"));
   c.speed_changes = params.getBool("speed_changes", c.speed_changes);
+  c.colregs = params.getBool("colregs", c.colregs);
   c.alpha = params.getDouble("alpha", c.alpha);
   c.beta = params.getDouble("beta", c.beta);
   c.p = params.getDouble("p", c.p);
@@ -154,19 +167,23 @@ void DssaAgent::setOwn(const ShipState& state, const Eigen::Vector2d& goal, doub
     for (int s : {1, -1}) {
       if (k == 0 && s < 0)
         continue;
+      if (config_.starboard_only && s < 0 && k > 0)
+        continue;  // give-way under the COLREGs: no port course change
       const double crs = s * k * config_.course_change_step;
       if (std::fabs(crs - crs_dest) < 1e-9)
         dest_on_grid = true;
       courses.push_back(crs);
     }
-  if (std::fabs(crs_dest) <= config_.course_change_max + 1e-12 && !dest_on_grid)
+  if (std::fabs(crs_dest) <= config_.course_change_max + 1e-12 && !dest_on_grid &&
+      !(config_.starboard_only && crs_dest < 0.0))
     courses.insert(courses.begin(), crs_dest);
   std::vector<double> spcs{0.0};
   if (config_.speed_changes) {
     const int ns = static_cast<int>(std::floor(config_.speed_change_max / config_.speed_change_step + 1e-9));
     for (int k = 1; k <= ns; ++k) {
       spcs.push_back(-k * config_.speed_change_step);
-      spcs.push_back(k * config_.speed_change_step);
+      if (!config_.starboard_only)
+        spcs.push_back(k * config_.speed_change_step);
     }
   }
   cand_.reserve(courses.size() * spcs.size());
@@ -400,6 +417,10 @@ void DssaPlanner::configure(const ParamMap& params) {
 }
 
 Plan DssaPlanner::plan(const PlanningProblem& problem) {
+  // "Collide" below at least the situation's demanded passing distance (planning.h).
+  DssaConfig cfg = config_;
+  cfg.collision_distance =
+      std::max(cfg.collision_distance, kSeparationMargin * std::max(0.0, problem.min_separation));
   const Deadline deadline(problem.time_budget > 0.0 ? problem.time_budget : 1e9);
   Plan out;
   if (!problem.own.finite()) {
@@ -409,8 +430,16 @@ Plan DssaPlanner::plan(const PlanningProblem& problem) {
   DssaShipSpeeds sp;
   sp.max = std::max(problem.limits.max_speed, 1e-6);
   sp.min = std::min(std::max(problem.limits.min_speed, 0.0), sp.max);
-  sp.ref = config_.ref_speed > 0.0 ? config_.ref_speed : problem.limits.max_speed;
-  DssaAgent agent(0, config_, sp);
+  // RefSPD: the ship's service speed, i.e. the speed it is planned at (as the ROS agent and asv_batch
+  // take the cruise speed); the maximum speed as RefSPD made DSSA+ speed up in every encounter.
+  sp.ref = cfg.ref_speed > 0.0 ? cfg.ref_speed
+                               : (problem.own.speed > 0.1 ? std::min(problem.own.speed, sp.max) : sp.max);
+  if (cfg.colregs)
+    for (const auto& t : problem.targets)
+      if (t.risk != RiskLevel::None &&
+          (t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay))
+        cfg.starboard_only = true;  // Rules 14-16 (see DssaConfig::colregs)
+  DssaAgent agent(0, cfg, sp);
   agent.setOwn(problem.own, problem.goal, problem.time);
   int id = 1;
   for (const auto& t : problem.targets) {
@@ -428,7 +457,7 @@ Plan DssaPlanner::plan(const PlanningProblem& problem) {
   }
   std::mt19937_64 rng(dssaAgentSeed(problem.seed, 0));
   int rounds = 0;
-  for (int round = 1; round <= config_.max_rounds; ++round) {
+  for (int round = 1; round <= cfg.max_rounds; ++round) {
     agent.decide(round, rng);
     rounds = round;
     if (agent.satisfied() || deadline.expired())
@@ -445,8 +474,8 @@ Plan DssaPlanner::plan(const PlanningProblem& problem) {
   w0.course = in.course;
   w0.speed = in.speed;
   PlannedWaypoint w1 = w0;
-  w1.time = config_.time_window;
-  w1.position = problem.own.position + in.intendedVelocity() * config_.time_window;
+  w1.time = cfg.time_window;
+  w1.position = problem.own.position + in.intendedVelocity() * cfg.time_window;
   out.waypoints = {w0, w1};
   out.compute_time = deadline.elapsed();
   const double cr = agent.collisionRisk(crs, in.speed_change);

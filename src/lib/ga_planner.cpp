@@ -159,6 +159,7 @@ GaFitness::GaFitness(const PlanningProblem& problem, const GaConfig& cfg) : cfg_
   candidate_cri_ = cfg_.cri;
   candidate_cri_.zero_when_diverging = false;
   own_.id.clear();  // the candidate copies made per evaluation then never allocate
+  sda_floor_ = kSeparationMargin * std::max(0.0, problem.min_separation);
   const Eigen::Vector2d next = problem.route.empty() ? problem.goal : problem.route.front();
   reference_course_ = (next - own_.position).norm() > 1e-6 ? trueBearing(own_.position, next) : own_.course;
   own_.course = own_.heading = reference_course_;
@@ -221,9 +222,11 @@ GaCostTerms GaFitness::terms(double alteration) const {
     const bool ahead_in_time = cpa.relative_motion && cpa.tcpa > 0.0;
     // Eq. (7): DCPA >= SDA, SDA = d1 = 1.5 rho(theta) of eq. (10), for a CPA still to come within the
     // attention range (farther targets are not yet part of the encounter).
-    if ((ahead_in_time || !cpa.relative_motion) && cpa.range <= cfg_.cri.attention_range_m && r.d1 > 0.0 &&
-        cpa.dcpa < r.d1)
-      shortfall += (r.d1 - cpa.dcpa) / r.d1;
+    // SDA is floored at the situation's demanded passing distance (PlanningProblem::min_separation).
+    const double sda = std::max(r.d1, sda_floor_);
+    if ((ahead_in_time || !cpa.relative_motion) && cpa.range <= cfg_.cri.attention_range_m && sda > 0.0 &&
+        cpa.dcpa < sda)
+      shortfall += (sda - cpa.dcpa) / sda;
 
     if (!t.engaged)
       continue;

@@ -572,7 +572,7 @@ RuleSelection selectRule(const PlanningProblem& problem, const MopsoConfig& cfg)
         sel.reason = "static obstacle '" + o.name + "' on the route";
         return sel;
       }
-    sel.reason = "no risk of collision (Table 1 +): keep course and speed";
+    sel.reason = "no risk of collision (Table 1 +): follow the route";
   }
   (void)cfg;
   return sel;
@@ -663,19 +663,20 @@ void MopsoPlanner::configure(const ParamMap& params) {
   cfg_ = MopsoConfig::fromParams(params);
 }
 
-std::vector<MopsoSolution> MopsoPlanner::optimise(const MopsoContext& ctx, uint64_t seed,
-                                                  const Deadline& deadline, MopsoResult& stats) const {
+std::vector<MopsoSolution> MopsoPlanner::optimise(const MopsoContext& ctx, const MopsoConfig& cfg,
+                                                  uint64_t seed, const Deadline& deadline,
+                                                  MopsoResult& stats) const {
   std::mt19937_64 rng(seed);
-  const double dmax = degToRad(cfg_.search_alteration_deg);
-  const std::array<double, 2> lo{{-dmax, cfg_.t_min_s}}, hi{{dmax, cfg_.t_max_s}};
-  const size_t n = static_cast<size_t>(cfg_.particles);
+  const double dmax = degToRad(cfg.search_alteration_deg);
+  const std::array<double, 2> lo{{-dmax, cfg.t_min_s}}, hi{{dmax, cfg.t_max_s}};
+  const size_t n = static_cast<size_t>(cfg.particles);
 
   struct Particle {
     std::array<double, 2> x, v, best;
     MopsoEvaluation eval, best_eval;
   };
   std::vector<Particle> swarm(n);
-  MopsoRepository repo(cfg_.repository_size, cfg_.grid_divisions);
+  MopsoRepository repo(cfg.repository_size, cfg.grid_divisions);
   auto solution = [](const std::array<double, 2>& x, const MopsoEvaluation& e) {
     MopsoSolution s;
     s.alteration = x[0];
@@ -690,7 +691,7 @@ std::vector<MopsoSolution> MopsoPlanner::optimise(const MopsoContext& ctx, uint6
       p.x[d] = uniform(rng, lo[d], hi[d]);
       p.v[d] = 0.0;
     }
-    p.eval = evaluateCandidate(p.x[0], p.x[1], ctx, cfg_);
+    p.eval = evaluateCandidate(p.x[0], p.x[1], ctx, cfg);
     ++stats.evaluations;
     p.best = p.x;
     p.best_eval = p.eval;
@@ -725,20 +726,19 @@ std::vector<MopsoSolution> MopsoPlanner::optimise(const MopsoContext& ctx, uint6
   };
   archive();
 
-  const double gens = std::max(1, cfg_.generations);
-  for (int gen = 0; gen < cfg_.generations; ++gen) {
+  const double gens = std::max(1, cfg.generations);
+  for (int gen = 0; gen < cfg.generations; ++gen) {
     if (deadline.expired())
       break;
     // Mutation of Coello et al. IV-C: probability and reach both shrink as (1 - gen/G)^(5/pM).
-    const double shrink = std::pow(1.0 - gen / gens, 5.0 / cfg_.mutation_rate);
+    const double shrink = std::pow(1.0 - gen / gens, 5.0 / cfg.mutation_rate);
     for (Particle& p : swarm) {
-      const MopsoSolution& leader = repo.selectLeader(cfg_.leader_fitness_x, rng);
+      const MopsoSolution& leader = repo.selectLeader(cfg.leader_fitness_x, rng);
       const std::array<double, 2> lx{{leader.alteration, leader.duration}};
       for (size_t d = 0; d < 2; ++d) {
         const double r1 = uniform01(rng), r2 = uniform01(rng);
         // Step 6(a): VEL = W VEL + R1 (PBEST - POP) + R2 (REP[h] - POP).
-        p.v[d] =
-            cfg_.inertia * p.v[d] + cfg_.c1 * r1 * (p.best[d] - p.x[d]) + cfg_.c2 * r2 * (lx[d] - p.x[d]);
+        p.v[d] = cfg.inertia * p.v[d] + cfg.c1 * r1 * (p.best[d] - p.x[d]) + cfg.c2 * r2 * (lx[d] - p.x[d]);
         p.x[d] += p.v[d];
         // Step 6(c): a particle leaving the box takes the boundary value and reverses its velocity.
         if (p.x[d] < lo[d]) {
@@ -754,7 +754,7 @@ std::vector<MopsoSolution> MopsoPlanner::optimise(const MopsoContext& ctx, uint6
         const double reach = (hi[d] - lo[d]) * shrink;
         p.x[d] = uniform(rng, std::max(lo[d], p.x[d] - reach), std::min(hi[d], p.x[d] + reach));
       }
-      p.eval = evaluateCandidate(p.x[0], p.x[1], ctx, cfg_);
+      p.eval = evaluateCandidate(p.x[0], p.x[1], ctx, cfg);
       ++stats.evaluations;
     }
     // Step 6(f)-(g): archive the new non-dominated positions (the grid adapts inside insert).
@@ -782,24 +782,30 @@ std::vector<MopsoSolution> MopsoPlanner::optimise(const MopsoContext& ctx, uint6
 }
 
 Plan MopsoPlanner::plan(const PlanningProblem& problem) {
+  // d_min of eq. (8) is at least the situation's demanded passing distance (planning.h).
+  MopsoConfig cfg = cfg_;
+  cfg.d_min_m = std::max(cfg.d_min_m, kSeparationMargin * std::max(0.0, problem.min_separation));
   const Deadline deadline(problem.time_budget);
   last_ = MopsoResult{};
   Plan out;
-  last_.rule = selectRule(problem, cfg_);
+  last_.rule = selectRule(problem, cfg);
   const RuleSelection& rule = last_.rule;
-  const MopsoContext base = makeContext(problem, cfg_, rule.urgent);
+  const MopsoContext base = makeContext(problem, cfg, rule.urgent);
   const double v = base.speed;
 
   if (rule.action == HuAction::None || rule.action == HuAction::StandOn) {
-    // Keep course and speed: one leg on the present course, as long as the way to C.
+    // Stand-on (Rule 17(a)(i)): keep course and speed, one leg on the present course as long as the
+    // way to C. No risk: follow the route, i.e. head for C (section 2: the evasion path A-B-C ends on
+    // the route; "keep course" after an evasion would leave the ship on its evasion leg for good).
     const double l_ac = (base.c - base.a).norm();
-    const double horizon = l_ac > 0.0 ? l_ac / v : cfg_.cpa_horizon_s;
-    PlannedWaypoint a{base.a, 0.0, problem.own.course, v};
-    PlannedWaypoint ahead{base.a + courseSpeedToVelocity(problem.own.course, v * horizon), horizon,
-                          problem.own.course, v};
+    const double horizon = l_ac > 0.0 ? l_ac / v : cfg.cpa_horizon_s;
+    const double course =
+        rule.action == HuAction::None && l_ac > 1.0 ? courseOf(base.c - base.a) : problem.own.course;
+    PlannedWaypoint a{base.a, 0.0, course, v};
+    PlannedWaypoint ahead{base.a + courseSpeedToVelocity(course, v * horizon), horizon, course, v};
     out.waypoints = {a, ahead};
     out.status = PlanStatus::Ok;
-    out.course_setpoint = problem.own.course;
+    out.course_setpoint = course;
     out.speed_setpoint = v;
     out.cost = 0.0;
     out.message = rule.reason;
@@ -808,16 +814,16 @@ Plan MopsoPlanner::plan(const PlanningProblem& problem) {
   }
 
   MopsoContext ctx = base;
-  ctx.impose_starboard = cfg_.prefer_starboard;
+  ctx.impose_starboard = cfg.prefer_starboard;
   last_.pass = 1;
-  last_.pareto_front = optimise(ctx, problem.seed, deadline, last_);
-  int idx = selectFromFront(last_.pareto_front, cfg_);
-  if (idx < 0 && cfg_.prefer_starboard) {
+  last_.pareto_front = optimise(ctx, cfg, problem.seed, deadline, last_);
+  int idx = selectFromFront(last_.pareto_front, cfg);
+  if (idx < 0 && cfg.prefer_starboard) {
     // Section 2.3: no feasible starboard manoeuvre, so (6) is relaxed and port is allowed.
     ctx.impose_starboard = false;
     last_.pass = 2;
-    last_.pareto_front = optimise(ctx, problem.seed ^ 0x9E3779B97F4A7C15ULL, deadline, last_);
-    idx = selectFromFront(last_.pareto_front, cfg_);
+    last_.pareto_front = optimise(ctx, cfg, problem.seed ^ 0x9E3779B97F4A7C15ULL, deadline, last_);
+    idx = selectFromFront(last_.pareto_front, cfg);
   }
   bool feasible = idx >= 0;
   if (!feasible && !last_.pareto_front.empty())

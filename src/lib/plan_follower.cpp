@@ -10,8 +10,8 @@ void PlanFollowerConfig::validate() const {
   if (!(cruise_speed >= 0.0 && replan_period > 0 && min_replan_interval >= 0 && time_budget > 0 &&
         waypoint_acceptance > 0 && fallback_speed_factor >= 0 && fallback_speed_factor <= 1 &&
         extremis_range >= 0 && plan_clearance >= 0 && prediction_horizon > 0 && limits.max_speed > 0 &&
-        limits.min_speed >= 0 && limits.min_speed <= limits.max_speed && limits.turn_rate > 0 &&
-        limits.turn_delay >= 0))
+        min_separation >= 0 && risk_clear_time >= 0 && limits.min_speed >= 0 &&
+        limits.min_speed <= limits.max_speed && limits.turn_rate > 0 && limits.turn_delay >= 0))
     throw std::invalid_argument("plan follower: a parameter is out of range (see planner_node.yaml)");
 }
 
@@ -27,6 +27,9 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   c.plan_clearance = p.getDouble("plan_clearance", c.plan_clearance);
   c.prediction_horizon = p.getDouble("prediction_horizon", c.prediction_horizon);
   c.seed = p.getInt("seed", c.seed);
+  c.min_separation = p.getDouble("min_separation", c.min_separation);
+  c.stand_on_policy = p.getBool("stand_on_policy", c.stand_on_policy);
+  c.risk_clear_time = p.getDouble("risk_clear_time", c.risk_clear_time);
   c.limits.max_speed = p.getDouble("max_speed", c.limits.max_speed);
   c.limits.min_speed = p.getDouble("min_speed", c.limits.min_speed);
   c.limits.turn_rate = p.getDouble("turn_rate", c.limits.turn_rate);
@@ -55,9 +58,16 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   pr.obstacles = obstacles_;
   pr.seed = static_cast<uint64_t>(cfg_.seed) + replans_;
   pr.time_budget = cfg_.time_budget;
-  for (const auto& t : targets)
-    if (t.state.id != own_->id && t.state.finite())
-      pr.targets.push_back(t);
+  pr.min_separation = cfg_.min_separation;
+  for (const auto& t : targets) {
+    if (t.state.id == own_->id || !t.state.finite())
+      continue;
+    // Rule 17(a)(i): the stand-on ship keeps course and speed while the give-way ship is expected to
+    // act (Hu's compliance flag) and the situation is not yet urgent (17(a)(ii), 17(b): then it acts).
+    if (cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent)
+      continue;
+    pr.targets.push_back(t);
+  }
   return pr;
 }
 
@@ -124,10 +134,18 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
     return false;
   for (const auto& t : targets) {
     auto it = known_levels_.find(t.state.id);
-    if (t.risk == RiskLevel::None && it != known_levels_.end()) {
-      known_levels_.erase(it);  // the risk has cleared: a new one later is news again
+    if (t.risk == RiskLevel::None) {
+      // The risk has cleared once it stays none for risk_clear_time: a new one later is news again.
+      if (it != known_levels_.end()) {
+        auto since = none_since_.emplace(t.state.id, now).first;
+        if (now - since->second >= cfg_.risk_clear_time) {
+          known_levels_.erase(it);
+          none_since_.erase(since);
+        }
+      }
       continue;
     }
+    none_since_.erase(t.state.id);
     const RiskLevel before = it == known_levels_.end() ? RiskLevel::None : it->second;
     // Only rises replan: a level that falls (or flickers round a threshold) would make the ship dither.
     if (static_cast<int>(t.risk) > static_cast<int>(before)) {

@@ -388,13 +388,13 @@ TEST(DssaPlanner, AvoidsAConstantVelocityTargetDeterministically) {
   EXPECT_GE(w.dcpa, planner.config().collision_distance);
   ASSERT_EQ(a.waypoints.size(), 2u);
   EXPECT_NEAR((a.waypoints[1].position - pb.own.position).norm(), a.speed_setpoint * 20.0, 1e-9);
-  // No target: straight for the goal at the reference speed (limits.max_speed), cost 0.
+  // No target: straight for the goal at the reference speed (RefSPD: the own planning speed), cost 0.
   pb.targets.clear();
   pb.goal = {1000 * std::sin(degToRad(20)), 1000 * std::cos(degToRad(20))};
   pb.own.speed = 6;
   const Plan c = planner.plan(pb);
   EXPECT_NEAR(radToDeg(c.course_setpoint), 20.0, 1e-9);
-  EXPECT_DOUBLE_EQ(c.speed_setpoint, 10.0);
+  EXPECT_DOUBLE_EQ(c.speed_setpoint, 6.0);
   EXPECT_NEAR(c.cost, 0.0, 1e-12);
   ParamMap bad;
   bad.set("nonsense", 1.0);

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include <asv_core/plan_follower.h>
 #include <asv_core/planning.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
@@ -45,6 +46,9 @@ struct PlannerNodeParams {
   double prediction_horizon = 1200.0;  // [s] how far ahead the plan is checked
   int seed = 1;
   asv::OwnShipLimits limits;
+  double min_separation = 0.0;    // [m] 0: the scenario's safety.min_separation_m (else the planners' own)
+  bool stand_on_policy = true;    // Rule 17(a)(i): stand on for compliant give-way targets (PlanFollower)
+  double risk_clear_time = 60.0;  // [s]
 };
 
 class PlannerNode {
@@ -57,11 +61,8 @@ private:
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
   void goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg);
   void timerCallback(const ros::TimerEvent&);
-  bool replanNeeded(std::string& why);
-  double predictedClearance() const;
-  void replan(const std::string& why);
-  asv::PlanningProblem buildProblem() const;
-  asv::Plan fallback(const std::string& why) const;
+  std::vector<asv::PlannerTarget> targetsNow() const;
+  void replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets);
   void publishPlan();
   void publishSetpoint();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
@@ -79,14 +80,10 @@ private:
   std::optional<asv::ShipState> own_;
   asv_msgs::RiskAssessment::ConstPtr risk_;
   asv_msgs::TargetArray::ConstPtr targets_;
-  std::map<std::string, uint8_t> known_levels_;  // risk level per target at the last plan
-  asv::Plan plan_;
-  bool have_plan_ = false;
-  size_t wp_index_ = 1;
-  ros::Time last_plan_time_;
+  // Replanning policy and plan-to-set-point logic, shared with asv_batch (asv_core/plan_follower.h).
+  std::unique_ptr<asv::PlanFollower> follower_;
   ros::Time plan_stamp_;
-  double course_sp_ = 0.0, speed_sp_ = 0.0;
-  uint64_t replans_ = 0, fallbacks_ = 0, overruns_ = 0, seq_ = 0;
+  uint64_t overruns_ = 0;
   double last_compute_ = 0.0, max_compute_ = 0.0;
   std::string last_reason_;
   std::unique_ptr<DssaRosAgent>

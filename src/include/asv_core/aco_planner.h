@@ -83,6 +83,12 @@ struct AcoConfig {
   // Hexagon domain round every target (keys domain_a_m ... domain_e_m). Paper (section 3): a = 1 nm
   // bow, b = 0.6 nm amidships, c = 0.6 nm starboard, d = 0.25 nm stern, e = 0.25 nm port.
   HexagonDomainConfig domain;
+  // Not in the paper, whose COLREGs are "the size and shape of the domain" (Table 1): round a target
+  // for which the own ship is the give-way vessel of a head-on or crossing encounter at risk, the bow
+  // (a) and starboard (c) extents are multiplied by this, so that the shortest trajectory passes the
+  // target's port side or astern (Rules 14, 15) even when tracking noise puts it a little off the own
+  // track. Key colregs_factor; 1 = the paper's domain. Our choice: 2.
+  double colregs_factor = 2.0;
 
   // Throws std::invalid_argument naming the bad field.
   void validate() const;
@@ -96,7 +102,9 @@ struct AcoConfig {
 // and extrapolated at constant course and speed (the paper's assumption).
 class AcoEnvironment {
 public:
-  AcoEnvironment(const PlanningProblem& problem, const HexagonDomainConfig& domain);
+  // colregs_factor: AcoConfig::colregs_factor (1: the same domain round every target).
+  AcoEnvironment(const PlanningProblem& problem, const HexagonDomainConfig& domain,
+                 double colregs_factor = 1.0);
 
   // Inside the eq. (1) boundaries (when given) and outside every static polygon.
   bool pointStaticFree(const Eigen::Vector2d& p) const;
@@ -123,6 +131,11 @@ private:
   struct MovingTarget {
     Eigen::Vector2d p0, v;  // [m], [m/s] ENU position at t = 0 and velocity
     double sin_c = 0.0, cos_c = 1.0;
+    // Its domain polygon in the target frame (x starboard, y forward), counter-clockwise, as
+    // half-planes n . p <= h; lo/hi its bounding box.
+    Eigen::Matrix<double, 2, 6> normal;
+    Eigen::Matrix<double, 1, 6> offset;
+    Eigen::Vector2d lo, hi;
   };
   bool hitsTarget(const MovingTarget& tg, const Eigen::Vector2d& a, double ta, const Eigen::Vector2d& b,
                   double tb) const;
@@ -131,11 +144,6 @@ private:
   Eigen::Vector2d bounds_min_, bounds_max_;
   std::vector<Obstacle> obstacles_;
   std::vector<MovingTarget> targets_;
-  // Domain polygon in the target frame (x starboard, y forward), counter-clockwise, as half-planes
-  // n . p <= h; lo_/hi_ its bounding box.
-  Eigen::Matrix<double, 2, 6> normal_;
-  Eigen::Matrix<double, 1, 6> offset_;
-  Eigen::Vector2d lo_, hi_;
 };
 
 // The construction graph of Fig. 6: lattice vertices (own-ship positions) between the own ship (row 0)

@@ -30,6 +30,14 @@ namespace asv {
 struct DssaConfig {
   // false: DSSA (course changes only, the speed is kept); true: DSSA+ (course and speed changes, Sec. 4).
   bool speed_changes = false;
+  // Not in the papers (DSSA is built for congested waters where the COLREGs "do not work well",
+  // Sec. 1): when true, a plan made through PlanningProblem (DssaPlanner::plan) in which the own ship
+  // is the give-way vessel of a head-on or crossing encounter at risk searches only starboard course
+  // changes and no speed increase (Rules 14, 15, 16). false (the paper's search) by default; the sea
+  // defaults (seaDefaults()) turn it on. Key "colregs".
+  bool colregs = false;
+  // Set per plan from `colregs` (not a parameter): restricts Dom as described above.
+  bool starboard_only = false;
   // [-] alpha of EF (Sec. 3.2, Sec. 4): weight of the course inefficiency |theta_dest - theta(crs)|/180deg.
   // The paper gives only ratios (alpha = 10 beta, beta = 10 alpha, alpha = beta, Sec. 5); 1 is our
   // choice: a collision within the window costs CR >= 1 (TCPA <= TimeWindow), so a 45 deg turn
@@ -70,7 +78,8 @@ struct DssaConfig {
   // [s] wall-clock limit of one search phase (Fig. 1/2's time limit); <= 0: rounds only. Deterministic
   // runs should rely on max_rounds. Default 0.
   double max_search_time = 0.0;
-  // [m/s] RefSPD of DssaPlanner (Sec. 4); <= 0: the problem's limits.max_speed. Default 0. Agents
+  // [m/s] RefSPD of DssaPlanner (Sec. 4); <= 0: the own ship's planning speed (PlanningProblem::own,
+  // the cruise speed; limits.max_speed if it has none). Default 0. Agents
   // take RefSPD/MinSPD/MaxSPD from DssaShipSpeeds instead.
   double ref_speed = 0.0;
 
@@ -82,6 +91,11 @@ struct DssaConfig {
   // course_change_step_deg, speed_change_max, speed_change_step, max_rounds, max_search_time,
   // ref_speed. Unknown keys are rejected; the result is validated.
   static DssaConfig fromParams(const ParamMap& params);
+  // The sea-scale defaults every ROS and batch run starts from (the paper's values are in its own
+  // units: an 800 x 800 area, TimeWindow 20, detection range 500): a 10-minute window, intentions
+  // exchanged within 6 nm, "collide" below 0.5 nm, a 10 s search step, speed changes of up to 4 m/s
+  // (about 8 kn) in 1 m/s steps. Our choice; docs/results/dssa.md.
+  static ParamMap seaDefaults();
 
   // The paper's variants (Sec. 5), all with p = 0.8, TimeWindow 20, detection range 500:
   //   "dssa"          DSSA: course changes only, alpha = 1;

@@ -152,6 +152,7 @@ struct GaCostTerms {
 class GaFitness {
 public:
   GaFitness(const PlanningProblem& problem, const GaConfig& cfg);
+  double sdaFloor() const { return sda_floor_; }  // [m] PlanningProblem::min_separation x margin
   double referenceCourse() const { return reference_course_; }  // [rad] nautical
   double maxCri() const { return max_cri_; }                    // on the original course
   bool triggered() const { return max_cri_ > cfg_.cri_threshold; }
@@ -163,6 +164,7 @@ public:
   Cpa cpa(size_t i, double alteration) const;
 
 private:
+  double sda_floor_ = 0.0;
   struct Target {
     ShipState state;
     Eigen::Vector2d velocity;

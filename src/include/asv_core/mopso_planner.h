@@ -278,8 +278,8 @@ public:
 
 private:
   // One MOPSO run (Coello et al. Fig. 1 pseudo-code); returns the archive.
-  std::vector<MopsoSolution> optimise(const MopsoContext& ctx, uint64_t seed, const Deadline& deadline,
-                                      MopsoResult& stats) const;
+  std::vector<MopsoSolution> optimise(const MopsoContext& ctx, const MopsoConfig& cfg, uint64_t seed,
+                                      const Deadline& deadline, MopsoResult& stats) const;
   MopsoConfig cfg_;
   MopsoResult last_;
 };

@@ -31,6 +31,11 @@ struct PlanFollowerConfig {
   double plan_clearance = 370.4;       // [m]
   double prediction_horizon = 1200.0;  // [s]
   int seed = 1;                        // plan k uses seed + k
+  double min_separation = 0.0;         // [m] passing distance the planners must keep (0: their own)
+  bool stand_on_policy = true;         // Rule 17(a)(i): a compliant give-way target below Hu's urgent
+                                       // level is left out of the problem: the own ship stands on
+  double risk_clear_time = 60.0;       // [s] a target's risk must stay none this long before a new
+                                       // rise replans again (tracking noise flickers round thresholds)
   OwnShipLimits limits{10.0, 0.0, 0.0175, 10.0};
 
   void validate() const;  // throws std::invalid_argument
@@ -79,6 +84,7 @@ private:
   std::vector<StaticObstacle> obstacles_;
   std::optional<ShipState> own_;
   std::map<std::string, RiskLevel> known_levels_;
+  std::map<std::string, double> none_since_;  // when a known target's risk was last seen falling to none
   Plan plan_;
   bool have_plan_ = false;
   size_t wp_index_ = 1;

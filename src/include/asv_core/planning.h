@@ -55,7 +55,14 @@ struct PlanningProblem {
   Eigen::Vector2d bounds_min = Eigen::Vector2d::Zero(), bounds_max = Eigen::Vector2d::Zero();  // [m]
   uint64_t seed = 1;         // every stochastic planner draws from this seed only
   double time_budget = 1.0;  // [s] wall time the planner may use; then it returns its best
+  // [m] the passing distance the situation demands (a scenario's safety.min_separation_m); every
+  // planner keeps its own safe distance at least kSeparationMargin times this. 0: the paper's own.
+  double min_separation = 0.0;
 };
+
+// Margin on PlanningProblem::min_separation: plans are made at kinematic constant-velocity prediction,
+// but the ship follows them with turn delays and the targets are tracked with noise. Our choice (10 %).
+constexpr double kSeparationMargin = 1.1;
 
 struct PlannedWaypoint {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] ENU

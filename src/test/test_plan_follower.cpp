@@ -1,0 +1,117 @@
+// PlanFollower's COLREGs and replanning policy (plan_follower.h), the situation's minimum separation
+// passed to the planners (planning.h), and DSSA's COLREGs restriction of its search (dssa.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "asv_core/dssa.h"
+#include "asv_core/plan_follower.h"
+#include "asv_core/units.h"
+
+namespace {
+
+asv::ShipState own() {
+  asv::ShipState s;
+  s.id = "own";
+  s.position = {0.0, 0.0};
+  s.course = s.heading = 0.0;  // north
+  s.speed = 6.0;
+  s.length = 100.0;
+  return s;
+}
+
+// A crossing target on the own port side: the own ship is the stand-on vessel.
+asv::PlannerTarget standOnTarget(bool compliant, asv::RiskLevel risk) {
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.state.position = {-5000.0, 5000.0};
+  t.state.course = t.state.heading = asv::kPi / 2;  // east
+  t.state.speed = 6.0;
+  t.encounter = asv::Encounter::CrossingStandOn;
+  t.role = asv::OwnRole::StandOn;
+  t.compliant = compliant;
+  t.risk = risk;
+  return t;
+}
+
+asv::PlanFollower follower(bool stand_on_policy = true) {
+  asv::PlanFollowerConfig c;
+  c.min_separation = 926.0;
+  c.stand_on_policy = stand_on_policy;
+  asv::PlanFollower f(c);
+  f.setGoal({0.0, 20000.0});
+  f.updateOwn(own());
+  return f;
+}
+
+}  // namespace
+
+TEST(PlanFollower, StandOnKeepsOutCompliantGiveWayTargetsOnly) {
+  const asv::PlanFollower f = follower();
+  // Rule 17(a)(i): the give-way ship is expected to act; the planner does not see it.
+  EXPECT_TRUE(f.buildProblem(0.0, {standOnTarget(true, asv::RiskLevel::Collision)}).targets.empty());
+  // Rule 17(a)(ii): the give-way ship does not act (Hu's non-compliance flag): the own ship acts.
+  EXPECT_EQ(f.buildProblem(0.0, {standOnTarget(false, asv::RiskLevel::Collision)}).targets.size(), 1u);
+  // Rule 17(b): close quarters (Hu's urgent level): the own ship acts whatever the other does.
+  EXPECT_EQ(f.buildProblem(0.0, {standOnTarget(true, asv::RiskLevel::Urgent)}).targets.size(), 1u);
+  // The policy off: every target is planned against.
+  EXPECT_EQ(
+      follower(false).buildProblem(0.0, {standOnTarget(true, asv::RiskLevel::Collision)}).targets.size(), 1u);
+}
+
+TEST(PlanFollower, PassesTheMinimumSeparationToThePlanners) {
+  EXPECT_DOUBLE_EQ(follower().buildProblem(0.0, {}).min_separation, 926.0);
+}
+
+TEST(PlanFollower, RiskMustStayClearBeforeARiseReplansAgain) {
+  asv::PlanFollower f = follower(false);
+  std::string why;
+  ASSERT_TRUE(f.replanNeeded(0.0, {}, why));  // first plan
+  asv::Plan p;
+  p.status = asv::PlanStatus::Ok;
+  p.waypoints = {{{0.0, 0.0}, 0.0, 0.0, 6.0}, {{0.0, 20000.0}, 3333.0, 0.0, 6.0}};
+  auto at = [](asv::RiskLevel r) {
+    asv::PlannerTarget t = standOnTarget(true, r);
+    t.state.position = {-30000.0, 30000.0};  // far: the plan's predicted clearance never triggers
+    return std::vector<asv::PlannerTarget>{t};
+  };
+  f.acceptPlan(p, 0.0, at(asv::RiskLevel::Collision), "test");
+  // Level 1 -> 0 -> 1 within risk_clear_time (60 s): tracking flicker, no replan.
+  EXPECT_FALSE(f.replanNeeded(10.0, at(asv::RiskLevel::None), why));
+  EXPECT_FALSE(f.replanNeeded(40.0, at(asv::RiskLevel::Collision), why)) << why;
+  // Clear for 60 s: a new rise is news again.
+  EXPECT_FALSE(f.replanNeeded(50.0, at(asv::RiskLevel::None), why));
+  EXPECT_FALSE(f.replanNeeded(111.0, at(asv::RiskLevel::None), why));
+  EXPECT_TRUE(f.replanNeeded(120.0, at(asv::RiskLevel::Collision), why));
+  EXPECT_NE(why.find("0 -> 1"), std::string::npos) << why;
+}
+
+// Head-on: a target dead ahead on the reciprocal course, slightly to starboard of the own track, so
+// that the paper's search (shortest deviation) turns to port; with `colregs` DSSA turns to starboard.
+TEST(DssaColregs, GiveWayInHeadOnSearchesStarboardOnly) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {0.0, 20000.0};
+  pr.limits.max_speed = 8.0;
+  pr.time_budget = 10.0;
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.state.position = {150.0, 6000.0};
+  t.state.course = t.state.heading = asv::kPi;
+  t.state.speed = 6.0;
+  t.encounter = asv::Encounter::HeadOn;
+  t.role = asv::OwnRole::GiveWay;
+  t.risk = asv::RiskLevel::Collision;
+  pr.targets = {t};
+  auto firstCourseChange = [&](bool colregs) {
+    asv::DssaPlanner d("dssa");
+    asv::ParamMap p = asv::DssaConfig::seaDefaults();
+    p.set("colregs", colregs ? "true" : "false");
+    d.configure(p);
+    const asv::Plan plan = d.plan(pr);
+    EXPECT_EQ(plan.status, asv::PlanStatus::Ok) << plan.message;
+    return std::remainder(plan.course_setpoint - pr.own.course, 2 * asv::kPi);
+  };
+  EXPECT_LT(firstCourseChange(false), -1e-6);  // the paper's search: to port, away from the target
+  EXPECT_GT(firstCourseChange(true), 1e-6);    // Rule 14: to starboard
+}
