@@ -63,7 +63,7 @@ bool utcSeconds(std::string_view f, double& out) {
   if (!nmea::parseInt(f.substr(0, 2), hh) || !nmea::parseInt(f.substr(2, 2), mm) ||
       !nmea::parseDouble(f.substr(4), ss))
     return false;
-  if (hh < 0 || hh > 23 || mm < 0 || mm > 59 || ss < 0.0 || ss >= 61.0)
+  if (hh < 0 || hh > 23 || mm < 0 || mm > 59 || !(ss >= 0.0 && ss < 61.0))  // "nan" parses: reject it
     return false;
   out = hh * 3600.0 + mm * 60.0 + ss;
   return true;
@@ -103,7 +103,7 @@ Error unitOf(std::string_view f, char& unit) {
 // ddmm.mmm / dddmm.mmm with hemisphere -> degrees.
 bool latLon(std::string_view value, std::string_view hemi, bool is_lat, double& out) {
   double v;
-  if (!nmea::parseDouble(value, v) || v < 0.0)
+  if (!nmea::parseDouble(value, v) || !std::isfinite(v) || v < 0.0)  // "nan"/"inf" parse: reject them
     return false;
   const double deg = std::floor(v / 100.0);
   const double min = v - deg * 100.0;
@@ -209,7 +209,8 @@ Error parseTtm(const nmea::Sentence& s, TrackedTarget& t, const ArpaConfig& conf
     t.course_ref = Reference::kTrue;
   t.has_cpa = scaled(s.field(8), dist_k, config.max_distance, t.cpa);
   double tcpa_min;
-  if (nmea::parseDouble(s.field(9), tcpa_min) && std::isfinite(tcpa_min)) {
+  // Finite after the conversion too: 1e308 min is a finite field but an infinite number of seconds.
+  if (nmea::parseDouble(s.field(9), tcpa_min) && std::isfinite(tcpa_min * 60.0)) {
     t.has_tcpa = true;
     t.tcpa = tcpa_min * 60.0;
   }

@@ -109,7 +109,10 @@ PointSpec readPoint(const Ctx& c, const YAML::Node& n, const std::string& where,
       c.fail(n, where, "latitude/longitude out of range");
   } else {
     p.kind = PointSpec::BearingRange;
-    p.bearing = degToRad(c.number(n, "bearing_deg", w));
+    const double deg = c.number(n, "bearing_deg", w);
+    if (deg < 0.0 || deg > 360.0)  // unbounded, a huge bearing made a NaN position
+      c.fail(n["bearing_deg"], w + "bearing_deg", "must be in [0, 360] deg");
+    p.bearing = degToRad(deg);
     const double nm = c.number(n, "range_nm", w);
     if (nm < 0.0 || nm > kMaxRangeNm)
       c.fail(n["range_nm"], w + "range_nm", "must be in [0, 200] nm (metres given as miles?)");
@@ -153,11 +156,20 @@ double readSpeed(const Ctx& c, const YAML::Node& n, const std::string& where) {
   return v;
 }
 
-void flatten(const Ctx& c, const YAML::Node& n, const std::string& prefix, ParamMap& out) {
+// Nodes flatten() visits at most. YAML aliases let a small file name one mapping many times (26
+// nested aliases of 2 KB make 2^26 parameters, "billion laughs"): the cap keeps loading linear.
+constexpr std::size_t kMaxPlannerParamNodes = 10000;
+
+void flatten(const Ctx& c, const YAML::Node& n, const std::string& prefix, ParamMap& out,
+             std::size_t& budget) {
+  if (budget == 0)
+    c.fail(n, "planner_params", "more than 10000 entries (aliases expanding recursively?)");
+  --budget;
   if (n.IsMap()) {
     for (const auto& kv : n)
       flatten(c, kv.second,
-              prefix.empty() ? kv.first.as<std::string>() : prefix + "/" + kv.first.as<std::string>(), out);
+              prefix.empty() ? kv.first.as<std::string>() : prefix + "/" + kv.first.as<std::string>(), out,
+              budget);
   } else if (n.IsScalar()) {
     out.set(prefix, n.as<std::string>());
   } else if (!n.IsNull()) {
@@ -293,7 +305,9 @@ std::vector<const ScenarioShip*> Scenario::planningShips() const {
   return out;
 }
 
-Scenario parseScenario(const std::string& yaml_text, const std::string& source) {
+namespace {
+
+Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
   const Ctx c(source);
   YAML::Node root;
   try {
@@ -308,9 +322,10 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& source) 
               "static_obstacles", "planner_params"});
   Scenario s;
   s.source = source;
-  s.format = static_cast<int>(c.number(root, "format", ""));
-  if (s.format != 1)
+  // Compared as a double: casting an arbitrary number (1e300) to int first is undefined behaviour.
+  if (c.number(root, "format", "") != 1.0)
     c.fail(root["format"], "format", "unsupported format (this stack reads format 1)");
+  s.format = 1;
   s.name = c.text(root, "name", "");
   if (root["description"])
     s.description = c.text(root, "description", "");
@@ -393,9 +408,24 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& source) 
       s.obstacles.push_back(std::move(o));
     }
   }
-  if (root["planner_params"])
-    flatten(c, root["planner_params"], "", s.planner_params);
+  if (root["planner_params"]) {
+    std::size_t budget = kMaxPlannerParamNodes;
+    flatten(c, root["planner_params"], "", s.planner_params, budget);
+  }
   return s;
+}
+
+}  // namespace
+
+Scenario parseScenario(const std::string& yaml_text, const std::string& source) {
+  try {
+    return parseYaml(yaml_text, source);
+  } catch (const YAML::Exception& e) {
+    // yaml-cpp's own conversion errors (a sequence or a mapping used as a key, ...): a ScenarioError
+    // naming the file like every other error, as scenario.h promises.
+    throw ScenarioError(source + (e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1)) + ": " +
+                        e.msg);
+  }
 }
 
 Scenario loadScenario(const std::string& path) {

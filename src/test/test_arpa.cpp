@@ -213,3 +213,23 @@ TEST(ArpaOsd, OwnShipData) {
   c.max_speed = 0.0;
   EXPECT_THROW(c.validate(), std::invalid_argument);
 }
+
+// Found by fuzzing (src/fuzz/fuzz_arpa.cpp): std::from_chars reads "nan" and "inf", and a finite
+// TCPA in minutes can overflow in seconds; none of them may become a known value.
+TEST(ArpaFuzzRegression, NonFiniteFieldsAreUnknown) {
+  TargetPosition p;
+  Framed nan_lat("RATLL,01,nan,N,01848.300,E,,123456.00,T,");
+  ASSERT_EQ(parseTll(*nan_lat, p), Error::kNone);
+  EXPECT_FALSE(p.has_position);
+  EXPECT_TRUE(std::isnan(p.lat_deg));
+  Framed inf_lon("RATLL,01,5433.120,N,inf,E,,,T,");
+  ASSERT_EQ(parseTll(*inf_lon, p), Error::kNone);
+  EXPECT_FALSE(p.has_position);
+  TrackedTarget t;
+  Framed big_tcpa("RATTM,01,2.50,045.0,T,12.0,180.0,T,0.50,1e308,N,TGT1,T,,1234nan,A");
+  ASSERT_EQ(parseTtm(*big_tcpa, t), Error::kNone);
+  EXPECT_FALSE(t.has_tcpa);
+  EXPECT_TRUE(std::isnan(t.tcpa));
+  EXPECT_FALSE(t.has_time);  // seconds "nan"
+  EXPECT_TRUE(std::isnan(t.utc_seconds));
+}

@@ -120,3 +120,22 @@ TEST(Scenario, YamlSyntaxErrorNamesTheLine) {
   expectError("format: 1\nname: [unclosed\n", "test.yaml:");
   EXPECT_THROW(loadScenario("/nonexistent/scenario.yaml"), ScenarioError);
 }
+
+// Found by fuzzing (src/fuzz/fuzz_scenario.cpp): each was a crash, a NaN in an accepted scenario, a
+// non-ScenarioError exception or a hang.
+TEST(ScenarioFuzzRegression, HostileValuesAreScenarioErrors) {
+  // Cast to int before the check: undefined behaviour (UBSan: float-cast-overflow).
+  expectError(replace(kGood, "format: 1", "format: 1e300"), "unsupported format");
+  expectError(replace(kGood, "format: 1", "format: 1.5"), "unsupported format");
+  // Unbounded bearing: degToRad(1e308) is inf, the position NaN, and the scenario was accepted.
+  expectError(replace(kGood, "bearing_deg: 90", "bearing_deg: 1e308"), "must be in [0, 360] deg");
+  // A sequence as a key: yaml-cpp's BadConversion escaped instead of a ScenarioError.
+  expectError(replace(kGood, "seed_note: x", "[a]: x"), "test.yaml:");
+  // "Billion laughs": 26 nested aliases in 1 KB expand to 2^26 planner parameters.
+  std::string laughs = "planner_params:\n  a0: &a0 {x: 1, y: 2}\n";
+  for (int i = 1; i <= 26; ++i)
+    laughs += "  a" + std::to_string(i) + ": &a" + std::to_string(i) + " {p: *a" + std::to_string(i - 1) +
+              ", q: *a" + std::to_string(i - 1) + "}\n";
+  expectError(replace(kGood, "planner_params: {aco: {ants: 10, rho: 0.1}, seed_note: x}\n", laughs),
+              "more than 10000 entries");
+}
