@@ -13,7 +13,7 @@ CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES=""
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test bench demo clean format
+.PHONY: help setup build test bench demo clean format eval test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
@@ -21,6 +21,8 @@ help:
 	@echo "  make test    install what is missing, build, run every unit test and rostest"
 	@echo "  make build   build the catkin workspace (build/, devel/)"
 	@echo "  make bench   run the Google Benchmark executables, JSON into out/bench/"
+	@echo "  make test-asan  build and run the asv_core unit tests under ASan+UBSan (build_asan/)"
+	@echo "  make fuzz-long  run each libFuzzer target for FUZZ_RUNS executions (10 M), out/fuzz/summary.txt"
 	@echo "  make setup   install the Debian packages the stack needs (scripts/setup)"
 	@echo "  make format  clang-format every C++ file"
 	@echo "  make clean   remove build/, devel/ and out/"
@@ -36,7 +38,7 @@ test: build
 	@rm -rf build/test_results
 	@$(DEVEL) && $(CATKIN) run_tests -j1 > build/run_tests.log 2>&1 || true
 	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING" build/run_tests.log || true
-	@scripts/fuzz_smoke.sh 20 || true
+	@scripts/fuzz_smoke.sh 15 || true
 	@scripts/test_summary.py build/test_results
 
 bench: build
@@ -47,14 +49,40 @@ bench: build
 	done
 	@echo "bench: JSON results in out/bench/"
 
+# The headline scenario (Hu et al. Fig. 6: a give-way target that stands on, the own ship's MOPSO
+# planner) end to end through ROS with rviz recorded off-screen; DEMO_SCENARIO / DEMO_PLANNER / DEMO_RATE
+# choose another run.
+DEMO_SCENARIO ?= hu_non_compliant
+DEMO_PLANNER ?= mopso
+DEMO_RATE ?= 30
 demo: build
-	@mkdir -p out/demo && rm -f out/demo/risk_table.txt
-	@$(DEVEL) && roslaunch asv_risk demo.launch 2>&1 | tee out/demo/demo.log | grep -v -E "^\s*$$|process\[|started roslaunch|ROS_MASTER_URI|setting /run_id|auto-starting new master|core service|SUMMARY|PARAMETERS|NODES|^ \* |^  /|^\s+\w+ \(" || true
-	@test -s out/demo/risk_table.txt || { echo "demo: FAILED (no risk table; see out/demo/demo.log)"; exit 1; }
-	@echo "demo: log in out/demo/demo.log, risk table in out/demo/risk_table.txt"
+	@echo "demo: $(DEMO_SCENARIO) with $(DEMO_PLANNER) through the ROS pipeline at $(DEMO_RATE)x real time (rviz recorded off-screen)..."
+	@rviz/record.sh $(DEMO_SCENARIO) $(DEMO_PLANNER) $(DEMO_RATE) || { echo "demo: FAILED (see out/$(DEMO_SCENARIO)/$(DEMO_PLANNER)/launch.log)"; exit 1; }
+	@test -s out/$(DEMO_SCENARIO)/$(DEMO_PLANNER)/result.json || { echo "demo: FAILED (no result; see out/$(DEMO_SCENARIO)/$(DEMO_PLANNER)/launch.log)"; exit 1; }
+	@grep "evaluator_node: " out/$(DEMO_SCENARIO)/$(DEMO_PLANNER)/launch.log | grep -v -e "own ship '" -e "written to" \
+	  | sed -e 's/.*evaluator_node: //' -e 's/\x1b\[[0-9;]*m//g' || true
+	@echo "demo: result out/$(DEMO_SCENARIO)/$(DEMO_PLANNER)/result.json, bag out/$(DEMO_SCENARIO)/$(DEMO_PLANNER)/run.bag,"
+	@echo "      video out/$(DEMO_SCENARIO)/$(DEMO_PLANNER).mp4, final frame out/$(DEMO_SCENARIO)/$(DEMO_PLANNER).png"
 
 clean:
 	rm -rf build devel install out CMakeLists.txt
 
 format:
 	@find src asv_* -name '*.cpp' -o -name '*.h' | xargs clang-format -i
+
+# Batch evaluation (scripts/eval.sh, docs/evaluation.md): every scenario with every planner that applies,
+# SEEDS seeds each, through asv_batch; out/eval/results.jsonl, report.md and plots/.
+SEEDS ?= 3
+eval: build
+	@$(DEVEL) && scripts/eval.sh $(SEEDS)
+
+# Reliability (docs/reliability.md): the asv_core unit tests under AddressSanitizer, LeakSanitizer and
+# UndefinedBehaviorSanitizer in build_asan/, JUnit XML in build/test_results/asan/.
+test-asan: setup
+	@scripts/asan_tests.sh; status=$$?; scripts/test_summary.py build/test_results/asan && exit $$status
+
+# Long fuzzing: every libFuzzer target of scripts/fuzz_smoke.sh for FUZZ_RUNS executions, niced; logs,
+# grown corpora and any crash input in out/fuzz/, one line per target in out/fuzz/summary.txt.
+FUZZ_RUNS ?= 10000000
+fuzz-long: setup
+	@nice -n 15 scripts/fuzz_long.sh $(FUZZ_RUNS)

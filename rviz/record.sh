@@ -4,6 +4,7 @@
 #   SCENARIO  name in asv_bringup/scenarios (without .yaml)
 #   PLANNER   aco | dssa | dssa_plus | mopso | ga | "" (the scenario's own, default)
 #   RATE      simulation real-time factor (default 20)
+# Environment: RECORD_ARGS: more scenario.launch arguments (e.g. "max_sim_time:=1800").
 # Leaves out/SCENARIO/LABEL/{result.json,run.bag} and out/SCENARIO/LABEL.mp4 + .png (the final frame),
 # LABEL being the planner or "scenario". Needs a built workspace (make build) and xvfb, ffmpeg, rviz
 # (scripts/setup installs them).
@@ -17,8 +18,10 @@ label=${planner:-scenario}
 out="$PWD/out/$scenario"
 mkdir -p "$out/$label"
 export PATH=/usr/bin:$PATH ROS_HOSTNAME=localhost ROS_LOG_DIR="$PWD/build/ros_log"
+set +u  # the ROS environment scripts read unset variables
 # shellcheck disable=SC1091
 source devel/setup.bash
+set -u
 display=:$((90 + RANDOM % 9))
 Xvfb "$display" -screen 0 1280x720x24 -nolisten tcp > "$out/xvfb.log" 2>&1 &
 xvfb=$!
@@ -28,7 +31,7 @@ export DISPLAY=$display
 # Software rendering: there is no GPU on these machines.
 export LIBGL_ALWAYS_SOFTWARE=1
 roslaunch asv_bringup scenario.launch scenario:="$scenario" planner:="$planner" rate:="$rate" \
-  rviz:=true record:=true out:="$out/$label" > "$out/$label/launch.log" 2>&1 &
+  rviz:=true record:=true out:="$out/$label" ${RECORD_ARGS:-} > "$out/$label/launch.log" 2>&1 &
 launch=$!
 sleep 6  # rviz needs a few seconds to open its window
 ffmpeg -nostdin -loglevel error -y -f x11grab -video_size 1280x720 -framerate 10 -i "$display" \
@@ -38,6 +41,7 @@ wait $launch
 status=$?
 kill -INT $ffmpeg_pid 2>/dev/null
 wait $ffmpeg_pid 2>/dev/null
-ffmpeg -nostdin -loglevel error -y -sseof -1 -i "$out/$label.mp4" -frames:v 1 "$out/$label.png" || true
+# The last second shows rviz closing: the final frame of the run is a few seconds before the end.
+ffmpeg -nostdin -loglevel error -y -sseof -4 -i "$out/$label.mp4" -frames:v 1 "$out/$label.png" || true
 echo "record: video $out/$label.mp4, last frame $out/$label.png, bag $out/$label/run.bag, result $out/$label/result.json"
 exit $status

@@ -280,8 +280,8 @@ void SimNode::publishState(bool odom, bool ships) {
       m.type = visualization_msgs::Marker::CUBE;
       m.pose.position = t.position;
       m.pose.orientation = yawQuaternion(yaw);
-      // Drawn at least 250 m long so that ships stay visible at scenario scale.
-      const double scale = std::max(1.0, 250.0 / std::max(1.0, v.length));
+      // Drawn at least 500 m long so that ships stay visible at scenario scale (rviz/asv.rviz: 0.06 px/m).
+      const double scale = std::max(1.0, 500.0 / std::max(1.0, v.length));
       m.scale.x = v.length * scale;
       m.scale.y = v.beam * scale;
       m.scale.z = 5.0;
