@@ -8,6 +8,8 @@ export PATH := /usr/bin:/bin:$(PATH)
 export ROS_LOG_DIR := $(CURDIR)/build/ros_log
 export ROS_HOSTNAME := localhost
 JOBS ?= 2
+# make test also runs the asv_core unit tests under ASan+UBSan (ASAN=0 skips them).
+ASAN ?= 1
 BUILD_TYPE ?= Release
 CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES=""
@@ -39,6 +41,8 @@ test: build
 	@$(DEVEL) && $(CATKIN) run_tests -j1 > build/run_tests.log 2>&1 || true
 	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING" build/run_tests.log || true
 	@scripts/fuzz_smoke.sh 15 || true
+	@if [ "$(ASAN)" = 1 ]; then echo "test: asv_core unit tests under ASan+UBSan (build_asan/, log build/asan.log)..."; \
+	  JOBS=$(JOBS) scripts/asan_tests.sh > build/asan.log 2>&1 || true; fi
 	@scripts/test_summary.py build/test_results
 
 bench: build

@@ -3,7 +3,7 @@
 
 For every (encounter, planner) pair, scenario.launch runs the scenario through the real pipeline
 (sim_node -> NMEA -> ais_node/arpa_node -> tracker -> risk_node -> planner_node -> autopilot) at a
-real-time factor of ASV_ENCOUNTER_RATE (default 100; rate 0 outruns the ingestion and risk nodes, whose
+real-time factor of ASV_ENCOUNTER_RATE (default 150; rate 0 outruns the ingestion and risk nodes, whose
 pictures then go stale) until 300 s after the unaltered CPA, and the evaluator's result JSON must show:
   - no collision, and a minimum separation above the scenario's safety.min_separation_m;
   - role-correct behaviour (COLREGs), checked here from the manoeuvres independently of the score:
@@ -36,7 +36,7 @@ from asv_msgs.msg import CourseSpeedSetpoint, Plan, RiskAssessment, SimEvent, Ta
 from nav_msgs.msg import Odometry
 
 PLANNERS = ["aco", "ga", "mopso", "dssa", "dssa_plus"]
-RATE = os.environ.get("ASV_ENCOUNTER_RATE", "100")
+RATE = os.environ.get("ASV_ENCOUNTER_RATE", "150")
 # scenario -> (own role, [s] TCPA of the unaltered encounter at t = 0, from the scenario geometry:
 # range / closing speed, e.g. head-on 7 nm at 24 kn = 1050 s)
 ENCOUNTERS = {

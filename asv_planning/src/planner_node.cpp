@@ -258,6 +258,12 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
       risk_by_id[r.target_id] = &r;
   if (!targets_ || (now - targets_->header.stamp).toSec() >= params_.stale_after)
     return out;
+  // While the risk node is alive, a target it has not assessed yet (a new track, or the first second
+  // of a run) is left out: planned against without its encounter and role, the own ship could give
+  // way to a ship it should stand on for, or pass on the wrong side. Without a risk node (no recent
+  // RiskAssessment) every target is planned against, risk-blind.
+  const bool risk_alive =
+      !risk_by_id.empty() || (risk_ && (now - risk_->header.stamp).toSec() < params_.stale_after);
   for (const auto& t : targets_->targets) {
     if (t.id == params_.ship ||
         !asv::allFinite({t.position.x, t.position.y, t.course_over_ground, t.speed_over_ground}))
@@ -270,6 +276,8 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
     pt.state.heading = t.has_heading ? t.heading : t.course_over_ground;
     pt.state.length = t.length;
     auto it = risk_by_id.find(t.id);
+    if (risk_alive && it == risk_by_id.end())
+      continue;
     if (it != risk_by_id.end()) {
       const asv_msgs::TargetRisk& r = *it->second;
       pt.risk = static_cast<asv::RiskLevel>(r.risk_level);
@@ -291,7 +299,8 @@ void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerT
   const ros::WallTime start = ros::WallTime::now();
   asv::Plan plan;
   try {
-    plan = plugin_->makePlan(pr);
+    plan =
+        asv::planObservingGiveWay([this](const asv::PlanningProblem& p) { return plugin_->makePlan(p); }, pr);
   } catch (const std::exception& e) {
     ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), e.what());
     plan = follower_->fallback(targets, std::string("plugin error: ") + e.what());
@@ -330,7 +339,7 @@ void PlannerNode::publishPlan() {
   line.ns = params_.ship + "/plan";
   line.type = visualization_msgs::Marker::LINE_STRIP;
   line.pose.orientation.w = 1.0;
-  line.scale.x = 15.0;
+  line.scale.x = 40.0;  // [m] plan line: 2-3 px in rviz/asv.rviz
   line.color.a = 1.0;
   line.color.g = plan.status == asv::PlanStatus::Ok ? 1.0f : 0.3f;
   line.color.r = plan.status == asv::PlanStatus::Ok ? 0.2f : 1.0f;

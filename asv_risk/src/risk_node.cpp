@@ -286,7 +286,7 @@ visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssess
       m.ns = "cpa_line";
       m.id = id++;
       m.type = visualization_msgs::Marker::LINE_LIST;
-      m.scale.x = 10.0;
+      m.scale.x = 30.0;  // [m] 2 px at rviz/asv.rviz's 0.06 px/m
       m.points = {t.own_cpa_position, t.target_cpa_position};
       arr.markers.push_back(m);
       m.points.clear();
@@ -294,15 +294,16 @@ visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssess
       m.id = id++;
       m.type = visualization_msgs::Marker::SPHERE;
       m.pose.position = t.target_cpa_position;
-      m.scale.x = m.scale.y = m.scale.z = 40.0;
+      m.scale.x = m.scale.y = m.scale.z = 150.0;
       arr.markers.push_back(m);
     }
     m.ns = "label";
     m.id = id++;
     m.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
     m.pose.position.x = ra.own_position.x + t.range * std::sin(t.bearing);
-    m.pose.position.y = ra.own_position.y + t.range * std::cos(t.bearing) + 150.0;
-    m.scale.z = 80.0;
+    m.pose.position.y =
+        ra.own_position.y + t.range * std::cos(t.bearing) - 700.0;  // below the ship, clear of its name
+    m.scale.z = 200.0;                                              // [m] 12 px lines in rviz/asv.rviz
     static const char* roles[] = {"-", "give-way", "stand-on", "both give-way"};
     std::ostringstream s;
     s.precision(2);

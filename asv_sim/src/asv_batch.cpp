@@ -354,7 +354,8 @@ asv::RunResult runOnce(const Options& o, const asv::Scenario& sc, const std::str
           const auto t0 = std::chrono::steady_clock::now();
           asv::Plan plan;
           try {
-            plan = ps->plugin->makePlan(pr);
+            plan = asv::planObservingGiveWay(
+                [&](const asv::PlanningProblem& p) { return ps->plugin->makePlan(p); }, pr);
           } catch (const std::exception& e) {
             plan = ps->follower.fallback(targets, std::string("plugin error: ") + e.what());
           }

@@ -10,6 +10,7 @@
 #include <set>
 
 #include <asv_msgs/NmeaSentence.h>
+#include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/SimEvent.h>
 #include <asv_msgs/TargetArray.h>
 #include <geometry_msgs/TransformStamped.h>
@@ -27,6 +28,9 @@ constexpr double kEpoch = 1.0e9;  // [s] ROS time of simulation time 0
 const std::set<std::string> kKnownParams = {"scenario",
                                             "seed",
                                             "max_sim_time",
+                                            "keep_up_topic",
+                                            "keep_up_lead",
+                                            "keep_up_timeout",
                                             "rate",
                                             "publish_clock",
                                             "odom_rate",
@@ -102,6 +106,11 @@ SimNodeParams loadParams(const ros::NodeHandle& pnh) {
   get(pnh, "shutdown_at_end", p.shutdown_at_end);
   get(pnh, "start_delay", p.start_delay);
   get(pnh, "max_sim_time", p.max_sim_time);
+  get(pnh, "keep_up_topic", p.keep_up_topic);
+  get(pnh, "keep_up_lead", p.keep_up_lead);
+  get(pnh, "keep_up_timeout", p.keep_up_timeout);
+  if (!(p.keep_up_lead > 0.0) || !(p.keep_up_timeout > 0.0))
+    throw std::invalid_argument("keep_up_lead and keep_up_timeout must be > 0 s");
   if (!(p.max_sim_time >= 0.0))
     throw std::invalid_argument("max_sim_time must be >= 0 s (0: the scenario's duration)");
   auto& s = p.sim;
@@ -168,6 +177,13 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
     if (udp_fd_ < 0)
       throw std::runtime_error("cannot create a UDP socket");
   }
+  if (params_.rate == 0.0 && !params_.keep_up_topic.empty())
+    keep_up_sub_ = nh_.subscribe<asv_msgs::RiskAssessment>(
+        params_.keep_up_topic, 10, [this](const asv_msgs::RiskAssessment::ConstPtr& m) {
+          const double t = m->header.stamp.toSec() - kEpoch;
+          if (std::isfinite(t))
+            keep_up_time_ = std::max(keep_up_time_, t);
+        });
   updater_.setHardwareID("asv_sim");
   updater_.add("simulation", this, &SimNode::diagnose);
   ROS_INFO("sim_node: scenario '%s' (%zu ships, %.0f s), rate %s, seed %lu", sim_->scenario().name.c_str(),
@@ -313,8 +329,8 @@ void SimNode::publishState(bool odom, bool ships) {
       }
       m.ns = "names";
       m.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
-      m.pose.position.y += 120.0;
-      m.scale.z = 80.0;
+      m.pose.position.y += 450.0;
+      m.scale.z = 250.0;  // [m] text height: 15 px at rviz/asv.rviz's 0.06 px/m
       m.text = v.name;
       m.color.r = m.color.g = m.color.b = 1.0f;
       markers.markers.push_back(m);
@@ -352,6 +368,7 @@ void SimNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("sim time [s]", sim_->time());
   stat.add("real-time factor achieved", achieved_rtf_);
   stat.add("real-time factor requested", params_.rate);
+  stat.add("keep-up waits timed out", keep_up_timeouts_);
   stat.add("set-points accepted", cmds_ok_);
   stat.add("set-points rejected", cmds_rejected_);
   stat.add("NMEA sentences sent", nmea_sent_);
@@ -413,6 +430,17 @@ int SimNode::run() {
       const double ahead = sim_->time() / params_.rate - wall;
       if (ahead > 0.0)
         ros::WallDuration(ahead).sleep();
+    } else if (keep_up_sub_ && keep_up_time_ >= 0.0 && sim_->time() - keep_up_time_ > params_.keep_up_lead) {
+      // As fast as the subscribers keep up: wait for the pipeline's output to catch up.
+      const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(params_.keep_up_timeout);
+      while (ros::ok() && sim_->time() - keep_up_time_ > params_.keep_up_lead) {
+        if (ros::WallTime::now() > give_up) {
+          ++keep_up_timeouts_;
+          break;
+        }
+        ros::WallDuration(0.0005).sleep();
+        ros::spinOnce();
+      }
     }
     if ((ros::WallTime::now() - last_diag).toSec() >= 1.0) {
       updater_.force_update();

@@ -168,7 +168,9 @@ AcoEnvironment::AcoEnvironment(const PlanningProblem& problem, const HexagonDoma
     // The domain turns with the target's course (it keeps it, section 2.2).
     mt.sin_c = std::sin(t.state.course);
     mt.cos_c = std::cos(t.state.course);
-    const bool colregs = colregs_factor != 1.0 && t.risk != RiskLevel::None &&
+    // By the encounter alone, not the risk level: a plan made before the risk is established (a
+    // predicted close pass) must already leave the target on the side the rules will want.
+    const bool colregs = colregs_factor != 1.0 &&
                          (t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay);
     setDomain(colregs ? give_way : domain, mt);
     targets_.push_back(mt);

@@ -436,8 +436,7 @@ Plan DssaPlanner::plan(const PlanningProblem& problem) {
                                : (problem.own.speed > 0.1 ? std::min(problem.own.speed, sp.max) : sp.max);
   if (cfg.colregs)
     for (const auto& t : problem.targets)
-      if (t.risk != RiskLevel::None &&
-          (t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay))
+      if (t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay)
         cfg.starboard_only = true;  // Rules 14-16 (see DssaConfig::colregs)
   DssaAgent agent(0, cfg, sp);
   agent.setOwn(problem.own, problem.goal, problem.time);

@@ -38,6 +38,33 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   return c;
 }
 
+bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {
+  if (plan.status != PlanStatus::Ok || !std::isfinite(plan.course_setpoint))
+    return false;
+  return std::remainder(plan.course_setpoint - problem.own.course, 2 * kPi) < -degToRad(5.0);
+}
+
+Plan planObservingGiveWay(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
+                          int retries) {
+  bool give_way = false;
+  for (const auto& t : problem.targets)
+    give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
+  Plan first = make(problem);
+  if (!give_way || !firstAlterationToPort(first, problem))
+    return first;
+  for (int k = 1; k <= retries; ++k) {
+    problem.seed += 0x9E3779B9ULL * static_cast<uint64_t>(k);
+    Plan again = make(problem);
+    if (!firstAlterationToPort(again, problem)) {
+      again.message += " (retry " + std::to_string(k) + ": the first plan altered to port, Rules 14/15)";
+      again.compute_time += first.compute_time;
+      return again;
+    }
+  }
+  first.message += " (port alteration kept: no starboard plan in " + std::to_string(retries) + " retries)";
+  return first;
+}
+
 PlanFollower::PlanFollower(const PlanFollowerConfig& config) : cfg_(config) {
   cfg_.validate();
 }
@@ -135,7 +162,13 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
   for (const auto& t : targets) {
     auto it = known_levels_.find(t.state.id);
     if (t.risk == RiskLevel::None) {
-      // The risk has cleared once it stays none for risk_clear_time: a new one later is news again.
+      // The risk has cleared once it stays none, with the CPA past, for risk_clear_time: a new one
+      // later is news again. A risk that falls while the CPA is still ahead is the plan working (or
+      // tracking noise round Hu's d_min), not a new encounter: it does not re-arm the trigger.
+      if (it != known_levels_.end() && t.tcpa > 0.0) {
+        none_since_.erase(t.state.id);
+        continue;
+      }
       if (it != known_levels_.end()) {
         auto since = none_since_.emplace(t.state.id, now).first;
         if (now - since->second >= cfg_.risk_clear_time) {

@@ -84,6 +84,19 @@ TEST(PlanFollower, RiskMustStayClearBeforeARiseReplansAgain) {
   EXPECT_FALSE(f.replanNeeded(111.0, at(asv::RiskLevel::None), why));
   EXPECT_TRUE(f.replanNeeded(120.0, at(asv::RiskLevel::Collision), why));
   EXPECT_NE(why.find("0 -> 1"), std::string::npos) << why;
+
+  // With the CPA still ahead, a risk that falls to none (the plan working) never re-arms: back at
+  // level 1 after 200 s, no replan; a rise above what the plan saw (level 2) still replans.
+  f.acceptPlan(p, 120.0, at(asv::RiskLevel::Collision), "test");
+  auto ahead = [&](asv::RiskLevel r) {
+    auto v = at(r);
+    v[0].tcpa = 600.0;
+    return v;
+  };
+  EXPECT_FALSE(f.replanNeeded(130.0, ahead(asv::RiskLevel::None), why));
+  EXPECT_FALSE(f.replanNeeded(330.0, ahead(asv::RiskLevel::None), why));
+  EXPECT_FALSE(f.replanNeeded(340.0, ahead(asv::RiskLevel::Collision), why)) << why;
+  EXPECT_TRUE(f.replanNeeded(350.0, ahead(asv::RiskLevel::Urgent), why));
 }
 
 // Head-on: a target dead ahead on the reciprocal course, slightly to starboard of the own track, so
@@ -114,4 +127,47 @@ TEST(DssaColregs, GiveWayInHeadOnSearchesStarboardOnly) {
   };
   EXPECT_LT(firstCourseChange(false), -1e-6);  // the paper's search: to port, away from the target
   EXPECT_GT(firstCourseChange(true), 1e-6);    // Rule 14: to starboard
+}
+
+// Rules 14/15 guard: a fake planner that alters 20 deg to port on its first seed and 20 deg to
+// starboard on any other.
+TEST(PlanObservingGiveWay, RetriesAPortPlanWhenGivingWay) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.seed = 7;
+  int calls = 0;
+  auto fake = [&](const asv::PlanningProblem& p) {
+    ++calls;
+    asv::Plan plan;
+    plan.status = asv::PlanStatus::Ok;
+    plan.course_setpoint = asv::wrapTwoPi(p.own.course + asv::degToRad(p.seed == 7 ? -20.0 : 20.0));
+    return plan;
+  };
+  // No head-on or crossing give-way target: the plan stands, whatever its side.
+  asv::Plan p = asv::planObservingGiveWay(fake, pr);
+  EXPECT_EQ(calls, 1);
+  EXPECT_TRUE(asv::firstAlterationToPort(p, pr));
+  // Head-on: the port plan is refused and the retry's starboard plan taken.
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.encounter = asv::Encounter::HeadOn;
+  pr.targets = {t};
+  calls = 0;
+  p = asv::planObservingGiveWay(fake, pr);
+  EXPECT_EQ(calls, 2);
+  EXPECT_NEAR(std::remainder(p.course_setpoint - pr.own.course, 2 * asv::kPi), asv::degToRad(20.0), 1e-12);
+  EXPECT_NE(p.message.find("retry 1"), std::string::npos);
+  // A planner that only knows port: after 3 retries the first plan is kept, and says so.
+  calls = 0;
+  p = asv::planObservingGiveWay(
+      [&](const asv::PlanningProblem& q) {
+        ++calls;
+        asv::Plan plan;
+        plan.status = asv::PlanStatus::Ok;
+        plan.course_setpoint = asv::wrapTwoPi(q.own.course - 0.5);
+        return plan;
+      },
+      pr);
+  EXPECT_EQ(calls, 4);
+  EXPECT_NE(p.message.find("port alteration kept"), std::string::npos);
 }

@@ -37,6 +37,13 @@ struct SimNodeParams {
   bool shutdown_at_end = true;  // shut the node down when the scenario ends (launch: required="true")
   double start_delay = 1.0;     // [s, wall] wait for subscribers before time starts
   double max_sim_time = 0.0;    // [s] end the run here if earlier than the scenario end (0: no limit)
+  // rate 0 runs "as fast as the subscribers keep up": the simulation never gets more than keep_up_lead
+  // simulated seconds ahead of the last asv_msgs/RiskAssessment on keep_up_topic (the pipeline's
+  // output), waiting at most keep_up_timeout wall seconds each time (then it goes on: a pipeline that
+  // is not there does not stop the simulation). "" disables the wait.
+  std::string keep_up_topic = "/risk";
+  double keep_up_lead = 2.0;     // [s, sim]
+  double keep_up_timeout = 1.0;  // [s, wall]
   asv::SimConfig sim;
   asv::EmitterConfig emitter;
 };
@@ -69,6 +76,9 @@ private:
   int udp_fd_ = -1;
   uint64_t cmds_ok_ = 0, cmds_rejected_ = 0, nmea_sent_ = 0;
   double achieved_rtf_ = 0.0;
+  ros::Subscriber keep_up_sub_;
+  double keep_up_time_ = -1.0;  // [s, sim] stamp of the last message on keep_up_topic (-1: none yet)
+  uint64_t keep_up_timeouts_ = 0;
   std::map<size_t, std::vector<geometry_msgs::Point>> trails_;  // markers: where each ship has been
 };
 

@@ -84,7 +84,7 @@ struct AcoConfig {
   // bow, b = 0.6 nm amidships, c = 0.6 nm starboard, d = 0.25 nm stern, e = 0.25 nm port.
   HexagonDomainConfig domain;
   // Not in the paper, whose COLREGs are "the size and shape of the domain" (Table 1): round a target
-  // for which the own ship is the give-way vessel of a head-on or crossing encounter at risk, the bow
+  // for which the own ship is the give-way vessel of a head-on or crossing encounter, the bow
   // (a) and starboard (c) extents are multiplied by this, so that the shortest trajectory passes the
   // target's port side or astern (Rules 14, 15) even when tracking noise puts it a little off the own
   // track. Key colregs_factor; 1 = the paper's domain. Our choice: 2.

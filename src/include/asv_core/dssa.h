@@ -32,7 +32,7 @@ struct DssaConfig {
   bool speed_changes = false;
   // Not in the papers (DSSA is built for congested waters where the COLREGs "do not work well",
   // Sec. 1): when true, a plan made through PlanningProblem (DssaPlanner::plan) in which the own ship
-  // is the give-way vessel of a head-on or crossing encounter at risk searches only starboard course
+  // is the give-way vessel of a head-on or crossing encounter searches only starboard course
   // changes and no speed increase (Rules 14, 15, 16). false (the paper's search) by default; the sea
   // defaults (seaDefaults()) turn it on. Key "colregs".
   bool colregs = false;

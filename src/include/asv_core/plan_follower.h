@@ -9,6 +9,7 @@
 // Times are the caller's clock (simulation or ROS time) in seconds.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -34,8 +35,9 @@ struct PlanFollowerConfig {
   double min_separation = 0.0;         // [m] passing distance the planners must keep (0: their own)
   bool stand_on_policy = true;         // Rule 17(a)(i): a compliant give-way target below Hu's urgent
                                        // level is left out of the problem: the own ship stands on
-  double risk_clear_time = 60.0;       // [s] a target's risk must stay none this long before a new
-                                       // rise replans again (tracking noise flickers round thresholds)
+  double risk_clear_time = 60.0;       // [s] a target's risk must stay none, with its CPA past, this
+                                       // long before a new rise replans again (tracking noise flickers
+                                       // round thresholds; a plan that works lowers the risk)
   OwnShipLimits limits{10.0, 0.0, 0.0175, 10.0};
 
   void validate() const;  // throws std::invalid_argument
@@ -43,6 +45,15 @@ struct PlanFollowerConfig {
   // not rejected here (the caller owns the namespace).
   static PlanFollowerConfig fromParams(const ParamMap& params);
 };
+
+// Rules 14 and 15 for every planner: when the own ship gives way in a head-on or crossing encounter
+// (a target of the problem with that encounter), a plan whose first alteration is more than 5 deg to
+// port is refused and the planner asked again with another seed, up to `retries` times; if none
+// complies, the first plan is returned with a note in its message. Plans without such a target, and
+// fallbacks, pass unchanged. `make` is the planner (it may throw; the exception propagates).
+Plan planObservingGiveWay(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
+                          int retries = 3);
+bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
 
 class PlanFollower {
 public:
