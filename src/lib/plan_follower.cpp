@@ -188,8 +188,10 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
     }
   }
   // A plan is kept while it stays safe; periodic replanning of a safe plan would only make the ship weave.
+  // The bar is plan_clearance, raised to the situation's minimum separation when there is one: a plan
+  // predicted to pass inside the distance the situation demands is not safe.
   const double clearance = predictedClearance(targets);
-  if (clearance < cfg_.plan_clearance) {
+  if (clearance < std::max(cfg_.plan_clearance, cfg_.min_separation)) {
     why = "plan predicted to pass within " + std::to_string(static_cast<int>(clearance)) + " m";
     return true;
   }
