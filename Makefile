@@ -69,7 +69,7 @@ demo: build
 	@echo "      video out/$(DEMO_SCENARIO)/$(DEMO_PLANNER).mp4, final frame out/$(DEMO_SCENARIO)/$(DEMO_PLANNER).png"
 
 clean:
-	rm -rf build devel install out CMakeLists.txt
+	rm -rf build build_asan devel install out CMakeLists.txt
 
 format:
 	@find src asv_* -name '*.cpp' -o -name '*.h' | xargs clang-format -i
