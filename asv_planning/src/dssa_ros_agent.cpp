@@ -13,6 +13,7 @@
 #include <tf2/utils.h>
 
 #include "asv_planning/algorithm_plugin.h"
+#include "asv_planning/odometry.h"
 
 namespace asv_planning {
 
@@ -129,24 +130,14 @@ DssaRosAgent::~DssaRosAgent() {
 }
 
 void DssaRosAgent::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
-  const auto& q = msg->pose.pose.orientation;
-  const auto& v = msg->twist.twist.linear;
-  if (!asv::allFinite({msg->pose.pose.position.x, msg->pose.pose.position.y, q.x, q.y, q.z, q.w, v.x, v.y})) {
+  const std::optional<asv::ShipState> s = shipStateFromOdometry(*msg, opt_.ship);
+  if (!s) {
     ROS_WARN_THROTTLE(5.0, "planner_node: non-finite odometry ignored");
     return;
   }
-  // The twist is in the body frame (REP 105): rotate it into map.
-  const double yaw = tf2::getYaw(q);
-  const double ve = v.x * std::cos(yaw) - v.y * std::sin(yaw), vn = v.x * std::sin(yaw) + v.y * std::cos(yaw);
-  asv::ShipState s;
-  s.id = opt_.ship;
-  s.position = {msg->pose.pose.position.x, msg->pose.pose.position.y};
-  s.heading = asv::yawToCourse(yaw);
-  s.speed = std::hypot(ve, vn);
-  s.course = s.speed > 0.01 ? asv::courseOf({ve, vn}) : s.heading;
   const double t = msg->header.stamp.isZero() ? ros::Time::now().toSec() : msg->header.stamp.toSec();
   std::lock_guard<std::mutex> lock(mu_);
-  own_ = std::make_pair(s, t);
+  own_ = std::make_pair(*s, t);
 }
 
 void DssaRosAgent::intentionCallback(const asv_msgs::Intention::ConstPtr& msg) {

@@ -1,5 +1,7 @@
 #include "asv_planning/planner_node.h"
 
+#include "asv_planning/odometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -213,22 +215,13 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
 }
 
 void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
-  const auto& q = msg->pose.pose.orientation;
-  const auto& v = msg->twist.twist.linear;
-  if (!asv::allFinite({msg->pose.pose.position.x, msg->pose.pose.position.y, q.x, q.y, q.z, q.w, v.x, v.y})) {
+  const std::optional<asv::ShipState> s = shipStateFromOdometry(*msg, params_.ship);
+  if (!s) {
     ROS_WARN_THROTTLE(5.0, "planner_node: non-finite odometry ignored");
     return;
   }
-  const double yaw = tf2::getYaw(q);
-  const double ve = v.x * std::cos(yaw) - v.y * std::sin(yaw), vn = v.x * std::sin(yaw) + v.y * std::cos(yaw);
-  asv::ShipState s;
-  s.id = params_.ship;
-  s.position = {msg->pose.pose.position.x, msg->pose.pose.position.y};
-  s.heading = asv::yawToCourse(yaw);
-  s.speed = std::hypot(ve, vn);
-  s.course = s.speed > 0.01 ? asv::courseOf({ve, vn}) : s.heading;
-  follower_->updateOwn(s);
-  own_ = s;
+  follower_->updateOwn(*s);
+  own_ = *s;
 }
 
 void PlannerNode::riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg) {
