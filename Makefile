@@ -15,7 +15,7 @@ CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES=""
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test bench demo clean format eval test-asan fuzz-long
+.PHONY: help setup build test bench demo clean format eval dssa-results test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
@@ -23,6 +23,8 @@ help:
 	@echo "  make test    install what is missing, build, run every unit test and rostest"
 	@echo "  make build   build the catkin workspace (build/, devel/)"
 	@echo "  make bench   run the Google Benchmark executables, JSON into out/bench/"
+	@echo "  make eval    every scenario with every planner through asv_batch (out/eval/)"
+	@echo "  make dssa-results  the DSSA paper's three experiments through asv_batch -> docs/results/dssa.md"
 	@echo "  make test-asan  build and run the asv_core unit tests under ASan+UBSan (build_asan/)"
 	@echo "  make fuzz-long  run each libFuzzer target for FUZZ_RUNS executions (10 M), out/fuzz/summary.txt"
 	@echo "  make setup   install the Debian packages the stack needs (scripts/setup)"
@@ -32,14 +34,21 @@ help:
 setup:
 	@scripts/setup
 
+# catkin's test environment (build/catkin_generated/setup_cached.sh) keeps the PYTHONPATH of the first
+# configure, which leaves out devel/lib/python3/dist-packages if it did not exist yet: then no python
+# test node can import asv_msgs. So the folder exists before the first configure, and a build tree
+# configured without it is configured again.
 build: setup
+	@mkdir -p devel/lib/python3/dist-packages
 	@$(CATKIN) -j$(JOBS)
+	@grep -q "^export PYTHONPATH=.*$(CURDIR)/devel/lib/python3/dist-packages" build/catkin_generated/setup_cached.sh \
+	  || $(CATKIN) -j$(JOBS) --force-cmake
 
 test: build
 	@$(CATKIN) -j$(JOBS) tests
 	@rm -rf build/test_results
 	@$(DEVEL) && $(CATKIN) run_tests -j1 > build/run_tests.log 2>&1 || true
-	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING" build/run_tests.log || true
+	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING|ModuleNotFoundError|ImportError" build/run_tests.log || true
 	@scripts/fuzz_smoke.sh 15 || true
 	@if [ "$(ASAN)" = 1 ]; then echo "test: asv_core unit tests under ASan+UBSan (build_asan/, log build/asan.log)..."; \
 	  JOBS=$(JOBS) scripts/asan_tests.sh > build/asan.log 2>&1 || true; fi
@@ -79,6 +88,10 @@ format:
 SEEDS ?= 3
 eval: build
 	@$(DEVEL) && scripts/eval.sh $(SEEDS)
+
+# Hirayama et al. (2019) Sec. 5, Tables 1-3, through asv_batch: docs/results/dssa.md (scripts/dssa_results.py).
+dssa-results: build
+	@$(DEVEL) && scripts/dssa_results.py
 
 # Reliability (docs/reliability.md): the asv_core unit tests under AddressSanitizer, LeakSanitizer and
 # UndefinedBehaviorSanitizer in build_asan/, JUnit XML in build/test_results/asan/.

@@ -83,11 +83,7 @@ int DssaRosAgent::shipId(const std::string& name) {
 
 namespace {
 asv::DssaShipSpeeds shipSpeeds(const asv::DssaConfig& c, const DssaRosOptions& o) {
-  asv::DssaShipSpeeds s;
-  s.max = std::max(o.max_speed, 1e-6);
-  s.min = std::min(std::max(o.min_speed, 0.0), s.max);
-  s.ref = c.ref_speed > 0.0 ? c.ref_speed : (o.cruise_speed > 0.0 ? std::min(o.cruise_speed, s.max) : s.max);
-  return s;
+  return asv::dssaShipSpeeds(c, o.cruise_speed, o.min_speed, o.max_speed);
 }
 }  // namespace
 

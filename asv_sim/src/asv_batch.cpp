@@ -21,6 +21,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <asv_core/dssa.h>
@@ -43,6 +44,9 @@ const char* kUsage =
     "  --scenario FILE      scenario file (format 1), required\n"
     "  --planner NAME       own ship's planner: aco | dssa | dssa_plus | mopso | ga | none\n"
     "                       (default: the scenario's own_ship.planner; none steers for the goal)\n"
+    "  --agents NAME        planner of every target whose behaviour is planner (default: each its own)\n"
+    "  --set P.KEY=VALUE    planner parameter, over the scenario's planner_params (repeatable), e.g.\n"
+    "                       --set dssa_plus.preset=dssa_plus_sc\n"
     "  --seed S             first seed (default 1)\n"
     "  --runs N             runs with seeds S .. S+N-1 (default 1)\n"
     "  --json OUT           append the results to OUT (JSON Lines); default: stdout\n"
@@ -59,8 +63,9 @@ const char* kUsage =
     "exit status: 0 done (whatever the runs' outcomes), 2 bad arguments, scenario or planner, 1 failure.\n";
 
 struct Options {
-  std::string scenario, planner, json, trajectory;
+  std::string scenario, planner, json, trajectory, agents;
   bool planner_given = false;
+  std::vector<std::pair<std::string, std::string>> params;  // "planner/key", value
   uint64_t seed = 1;
   int runs = 1;
   double dt = 0.1;
@@ -100,6 +105,15 @@ Options parseArgs(int argc, char** argv) {
     } else if (a == "--planner") {
       o.planner = value();
       o.planner_given = true;
+    } else if (a == "--agents") {
+      o.agents = value();
+    } else if (a == "--set") {
+      const std::string kv = value();
+      const size_t eq = kv.find('=');
+      const size_t dot = kv.find_first_of("./");
+      if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 >= eq)
+        usageError("--set needs PLANNER.KEY=VALUE, got '" + kv + "'");
+      o.params.emplace_back(kv.substr(0, dot) + "/" + kv.substr(dot + 1, eq - dot - 1), kv.substr(eq + 1));
     } else if (a == "--seed") {
       const double s = parseNumber(a, value());
       if (s < 0 || s != std::floor(s))
@@ -286,10 +300,8 @@ asv::RunResult runOnce(const Options& o, const asv::Scenario& sc, const std::str
     exchange = std::make_unique<asv::DssaExchange>(group_cfg);
     for (size_t i : dssa_ships) {
       const asv::DssaConfig cfg = dssaConfig(planner_of[i], sc.planner_params);
-      asv::DssaShipSpeeds speeds;
-      speeds.ref = std::max(0.5, vs[i].cruise_speed);
-      speeds.min = 0.0;
-      speeds.max = std::max(speeds.ref, asv::OwnShipLimits{}.max_speed);
+      const asv::DssaShipSpeeds speeds = asv::dssaShipSpeeds(
+          cfg, vs[i].cruise_speed, 0.0, std::max(vs[i].cruise_speed, asv::OwnShipLimits{}.max_speed));
       agents.emplace_back(static_cast<int>(i), cfg, speeds);
       rngs.emplace_back(asv::dssaAgentSeed(seed, static_cast<int>(i)));
       agent_goals.push_back(
@@ -434,6 +446,12 @@ int main(int argc, char** argv) {
     std::cerr << "asv_batch: bad scenario: " << e.what() << "\n";
     return 2;
   }
+  for (const auto& kv : o.params)
+    sc.planner_params.set(kv.first, kv.second);
+  if (!o.agents.empty())
+    for (auto& t : sc.targets)
+      if (t.behaviour == asv::Behaviour::Planner)
+        t.planner = o.agents;
   std::string planner = o.planner_given ? o.planner : sc.own.planner;
   if (planner.empty())
     planner = "none";

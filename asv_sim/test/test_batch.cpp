@@ -114,3 +114,36 @@ TEST(AsvBatch, SameSeedGivesByteIdenticalJson) {
   const Output d2 = run("--scenario " + kScenario + " --seed 5 --quiet --deterministic");
   EXPECT_EQ(d1.out, d2.out);
 }
+
+TEST(AsvBatch, DssaPaperSixteenShipsAllArriveWithoutCollision) {
+  // Hirayama et al. (2019) Table 2: DSSA+ s>c succeeds in 50 of 50 trials of the 16-ship crossing. Ten
+  // of them here (seeds 1-10): every ship arrives and no two come closer than the collision distance 40.
+  const std::string sc = std::string(ASV_SIM_TEST_DIR) + "/../../asv_bringup/scenarios/dssa_16_ships.yaml";
+  const Output o = run("--scenario " + sc +
+                       " --planner dssa_plus --agents dssa_plus --set dssa_plus.preset=dssa_plus_sc"
+                       " --runs 10 --deterministic --quiet");
+  ASSERT_EQ(o.status, 0);
+  int lines = 0;
+  size_t start = 0;
+  for (size_t end; (end = o.out.find('\n', start)) != std::string::npos; start = end + 1) {
+    const std::string line = o.out.substr(start, end - start);
+    ++lines;
+    EXPECT_EQ(line.find("\"arrived\": false"), std::string::npos) << "seed " << lines;
+    EXPECT_FALSE(flag(line, "collision")) << "seed " << lines;
+    const std::regex sep("\"min_separation_m\": ([0-9.]+)");
+    int ships = 0;
+    for (std::sregex_iterator it(line.begin(), line.end(), sep), e; it != e; ++it, ++ships)
+      EXPECT_GE(std::stod((*it)[1]), 40.0) << "seed " << lines;
+    EXPECT_EQ(ships, 17);  // the own ship at the top level, then all 16 under "ships"
+  }
+  EXPECT_EQ(lines, 10);
+  // --agents gives every planning target that planner: plain DSSA, the own ship and 16 under "ships".
+  const Output d = run("--scenario " + sc + " --planner dssa --agents dssa --deterministic --quiet");
+  ASSERT_EQ(d.status, 0);
+  const std::regex dssa("\"planner\": \"dssa\"");
+  EXPECT_EQ(std::distance(std::sregex_iterator(d.out.begin(), d.out.end(), dssa), std::sregex_iterator()),
+            17);
+  // --set is checked: a malformed one and an unknown key are usage errors.
+  EXPECT_EQ(run("--scenario " + sc + " --set dssa_plus").status, 2);
+  EXPECT_EQ(run("--scenario " + sc + " --set dssa_plus.no_such_key=1 --quiet").status, 2);
+}

@@ -1,5 +1,6 @@
 // ACO trajectory planner, Lazarowska (2015). Equation numbers refer to that paper.
 #include "asv_core/aco_planner.h"
+#include "asv_core/geometry.h"
 
 #include <algorithm>
 #include <array>
@@ -17,25 +18,6 @@ constexpr int kMaxLateralSteps = 16;
 constexpr int kMaxRows = 1000;          // keeps the lattice (and the pheromone table) bounded
 constexpr double kStraightTol = 1e-9;   // [rad] course change below which a leg continues the last
 constexpr double kMinLegLength = 1e-6;  // [m]
-
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
-// Closed segments a-b and c-d share a point (touching and collinear overlap included).
-bool segmentsIntersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                       const Eigen::Vector2d& d) {
-  const double d1 = cross2(b - a, c - a), d2 = cross2(b - a, d - a);
-  const double d3 = cross2(d - c, a - c), d4 = cross2(d - c, b - c);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-    return true;
-  auto within = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
-    return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) &&
-           std::min(p.y(), q.y()) <= r.y() && r.y() <= std::max(p.y(), q.y());
-  };
-  return (d1 == 0 && within(a, b, c)) || (d2 == 0 && within(a, b, d)) || (d3 == 0 && within(c, d, a)) ||
-         (d4 == 0 && within(c, d, b));
-}
 
 // q uniform in [0, 1) from the raw 64-bit stream: std::uniform_real_distribution is not specified
 // bit-exactly across standard libraries, this is.

@@ -13,6 +13,7 @@ namespace {
 // Below this a cost difference is rounding, not an improvement: without it two candidates of equal cost
 // computed in a different order could make a ship flip between them and never be satisfied.
 constexpr double kImprovementEps = 1e-9;
+constexpr double kDestOnGridTol = 1.0e-3 * 3.14159265358979323846 / 180.0;  // [rad] 0.001 deg
 
 void require(bool ok, const char* field, const char* what) {
   if (!ok)
@@ -45,6 +46,22 @@ void DssaConfig::validate() const {
   require(max_rounds >= 1, "max_rounds", "must be >= 1");
   require(std::isfinite(max_search_time), "max_search_time", "must be finite");
   require(std::isfinite(ref_speed), "ref_speed", "must be finite");
+  require(std::isfinite(max_speed_over_ref), "max_speed_over_ref", "must be finite");
+}
+
+DssaShipSpeeds dssaShipSpeeds(const DssaConfig& config, double cruise_speed, double min_limit,
+                              double max_limit) {
+  DssaShipSpeeds s;
+  const double wanted = config.ref_speed > 0.0 ? config.ref_speed : cruise_speed;
+  if (config.max_speed_over_ref > 0.0) {
+    s.ref = wanted > 0.1 ? wanted : std::max(max_limit, 1e-6);
+    s.max = s.ref + config.max_speed_over_ref;
+  } else {
+    s.max = std::max(max_limit, 1e-6);
+    s.ref = config.ref_speed > 0.0 ? config.ref_speed : (wanted > 0.1 ? std::min(wanted, s.max) : s.max);
+  }
+  s.min = std::min(std::max(min_limit, 0.0), s.max);
+  return s;
 }
 
 ParamMap DssaConfig::seaDefaults() {
@@ -78,6 +95,7 @@ DssaConfig DssaConfig::fromParams(const ParamMap& params) {
   c.max_rounds = params.getInt("max_rounds", c.max_rounds);
   c.max_search_time = params.getDouble("max_search_time", c.max_search_time);
   c.ref_speed = params.getDouble("ref_speed", c.ref_speed);
+  c.max_speed_over_ref = params.getDouble("max_speed_over_ref", c.max_speed_over_ref);
   params.rejectUnknown("dssa");
   c.validate();
   return c;
@@ -170,13 +188,22 @@ void DssaAgent::setOwn(const ShipState& state, const Eigen::Vector2d& goal, doub
       if (config_.starboard_only && s < 0 && k > 0)
         continue;  // give-way under the COLREGs: no port course change
       const double crs = s * k * config_.course_change_step;
-      if (std::fabs(crs - crs_dest) < 1e-9)
+      // A destination course within 0.001 deg of a grid course is that course: a scenario's rounded
+      // initial course must not add a second, all but equal candidate that changes the tie-breaks.
+      if (std::fabs(crs - crs_dest) < kDestOnGridTol)
         dest_on_grid = true;
       courses.push_back(crs);
     }
-  if (std::fabs(crs_dest) <= config_.course_change_max + 1e-12 && !dest_on_grid &&
+  if (std::fabs(crs_dest) <= config_.course_change_max + kDestOnGridTol && !dest_on_grid &&
       !(config_.starboard_only && crs_dest < 0.0))
     courses.insert(courses.begin(), crs_dest);
+  // Not in the paper: when the goal lies within this step's move but outside +-course_change_max, a
+  // ship limited to the domain's turns would circle it for ever (the goal inside her turning circle).
+  // Fig. 1's control phase moves a ship directly, so she may then make straight for the goal; the
+  // move is costed like any other (docs/results/dssa.md, "arrival").
+  if (std::fabs(crs_dest) > config_.course_change_max + 1e-12 &&
+      (goal_ - position_).norm() <= speed_ * config_.time_step)
+    courses.push_back(crs_dest);
   std::vector<double> spcs{0.0};
   if (config_.speed_changes) {
     const int ns = static_cast<int>(std::floor(config_.speed_change_max / config_.speed_change_step + 1e-9));
@@ -427,13 +454,8 @@ Plan DssaPlanner::plan(const PlanningProblem& problem) {
     out.message = "dssa: own ship state is not finite";
     return out;
   }
-  DssaShipSpeeds sp;
-  sp.max = std::max(problem.limits.max_speed, 1e-6);
-  sp.min = std::min(std::max(problem.limits.min_speed, 0.0), sp.max);
-  // RefSPD: the ship's service speed, i.e. the speed it is planned at (as the ROS agent and asv_batch
-  // take the cruise speed); the maximum speed as RefSPD made DSSA+ speed up in every encounter.
-  sp.ref = cfg.ref_speed > 0.0 ? cfg.ref_speed
-                               : (problem.own.speed > 0.1 ? std::min(problem.own.speed, sp.max) : sp.max);
+  const DssaShipSpeeds sp =
+      dssaShipSpeeds(cfg, problem.own.speed, problem.limits.min_speed, problem.limits.max_speed);
   if (cfg.colregs)
     for (const auto& t : problem.targets)
       if (t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay)

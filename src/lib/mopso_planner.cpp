@@ -1,4 +1,5 @@
 #include "asv_core/mopso_planner.h"
+#include "asv_core/geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,10 +20,6 @@ bool finitePositive(double v) {
   return std::isfinite(v) && v > 0.0;
 }
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 // Uniform in [0, 1) from 53 random bits: std::uniform_real_distribution is not specified bit for bit
 // across standard libraries, and the plan must not depend on which one built us.
 double uniform01(std::mt19937_64& rng) {
@@ -33,25 +30,6 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
 }
 size_t uniformIndex(std::mt19937_64& rng, size_t n) {
   return std::min(n - 1, static_cast<size_t>(uniform01(rng) * static_cast<double>(n)));
-}
-
-double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double s = l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (a + s * ab - p).norm();
-}
-
-bool segmentsIntersect(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& a,
-                       const Eigen::Vector2d& b) {
-  const double d1 = cross2(q - p, a - p), d2 = cross2(q - p, b - p);
-  const double d3 = cross2(b - a, p - a), d4 = cross2(b - a, q - a);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-    return true;
-  auto onSeg = [](const Eigen::Vector2d& s0, const Eigen::Vector2d& s1, const Eigen::Vector2d& r, double c) {
-    return c == 0.0 && (r - s0).dot(r - s1) <= 0.0;
-  };
-  return onSeg(p, q, a, d1) || onSeg(p, q, b, d2) || onSeg(a, b, p, d3) || onSeg(a, b, q, d4);
 }
 
 }  // namespace

@@ -186,8 +186,9 @@ struct RawShip {
 };
 
 RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bool own) {
-  std::set<std::string> allowed{"name",     "mmsi",       "model",    "ais_class", "length_m", "beam_m",
-                                "position", "course_deg", "speed_kn", "speed_mps", "goal",     "planner"};
+  std::set<std::string> allowed{"name",   "mmsi",     "model",        "ais_class", "length_m",
+                                "beam_m", "position", "course_deg",   "speed_kn",  "speed_mps",
+                                "goal",   "planner",  "goal_radius_m"};
   if (!own)
     allowed.insert({"behaviour", "waypoints"});
   c.onlyKeys(n, where, allowed);
@@ -230,6 +231,13 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
   s.speed = readSpeed(c, n, w);
   if (n["goal"])
     r.goal = readPoint(c, n["goal"], w + "goal", true);
+  if (n["goal_radius_m"]) {
+    if (!n["goal"])
+      c.fail(n["goal_radius_m"], w + "goal_radius_m", "needs a goal");
+    s.goal_radius = c.number(n, "goal_radius_m", w);
+    if (!(s.goal_radius > 0.0) || s.goal_radius > 10000.0)
+      c.fail(n["goal_radius_m"], w + "goal_radius_m", "must be in (0, 10000] m");
+  }
   if (n["planner"]) {
     s.planner = c.text(n, "planner", w);
     const auto& known = knownPlanners();

@@ -6,6 +6,7 @@
 
 #include "asv_core/colregs.h"
 #include "asv_core/cpa.h"
+#include "asv_core/geometry.h"
 #include "asv_core/nmea_encode.h"
 
 namespace asv {
@@ -82,8 +83,9 @@ Simulation::Simulation(const Scenario& scenario, const SimConfig& config)
     v.behaviour = v.own ? Behaviour::Planner : s.behaviour;
     v.planner = s.planner;
     v.model_name = s.model;
-    if (s.model == "kinematic") {
+    if (s.model == "kinematic" || s.model == "point") {
       KinematicParams kp;
+      kp.instant = s.model == "point";
       if (s.length > 0.0)
         kp.length = s.length;
       v.model = std::make_unique<KinematicModel>(kp);
@@ -103,6 +105,8 @@ Simulation::Simulation(const Scenario& scenario, const SimConfig& config)
     v.course_sp = v.cruise_course = s.course;
     v.speed_sp = v.cruise_speed = s.speed;
     v.goal = s.goal;
+    v.goal_radius = s.goal_radius;
+    v.step_from = s.position;
     v.waypoints = s.waypoints;
     if (v.autopilot)
       v.autopilot->setCourseSpeed(v.course_sp, v.speed_sp);
@@ -188,8 +192,10 @@ void Simulation::giveWayLogic(SimVessel& v, size_t index) {
 
 void Simulation::steer(SimVessel& v) {
   const Eigen::Vector2d p = v.position();
-  const double accept = std::max(cfg_.traffic.waypoint_acceptance, 2.0 * v.length);
-  if (v.goal && !v.arrived && (p - *v.goal).norm() <= accept) {
+  const double accept =
+      v.goal_radius > 0.0 ? v.goal_radius : std::max(cfg_.traffic.waypoint_acceptance, 2.0 * v.length);
+  // Judged along the last step's track, so a fast ship cannot step over a small arrival circle.
+  if (v.goal && !v.arrived && pointSegmentDistance(*v.goal, v.step_from, p) <= accept) {
     v.arrived = true;
     v.arrival_time = time_;
     events_.push_back({SimEvent::Arrival, time_, v.name, "", (p - *v.goal).norm()});
@@ -226,7 +232,7 @@ void Simulation::step() {
   const double dt = cfg_.dt;
   for (auto& v : vessels_) {
     steer(v);
-    const Eigen::Vector2d before = v.position();
+    const Eigen::Vector2d before = v.step_from = v.position();
     VesselInput in;
     in.course = v.course_sp;
     in.speed = v.speed_sp;

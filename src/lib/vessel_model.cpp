@@ -115,6 +115,15 @@ void KinematicModel::step(const VesselInput& input, const Environment&, double d
   }
   state_.u = V;
   state_.v = 0.0;
+  if (p_.instant) {
+    // Fig. 1 of Hirayama et al.: the new course holds from the start of the step.
+    manoeuvring_ = false;
+    state_.psi = target_course_ = cmd;
+    state_.r = 0.0;
+    state_.x += V * dt * std::sin(cmd);
+    state_.y += V * dt * std::cos(cmd);
+    return;
+  }
 
   // Closed-form integration of eq. (4) piece by piece (straight, turn, straight), exact for any dt.
   double psi = state_.psi;

@@ -362,6 +362,31 @@ TEST(DssaConfig, PresetsParamsAndValidation) {
   EXPECT_THROW(z.validate(), std::invalid_argument);
 }
 
+TEST(DssaConfig, ShipSpeedsFromTheConfigAndTheHostLimits) {
+  DssaConfig c;
+  // Host limit only: RefSPD the cruise speed, MaxSPD the limit.
+  DssaShipSpeeds s = dssaShipSpeeds(c, 7.0, 1.0, 10.0);
+  EXPECT_DOUBLE_EQ(s.ref, 7.0);
+  EXPECT_DOUBLE_EQ(s.min, 1.0);
+  EXPECT_DOUBLE_EQ(s.max, 10.0);
+  // A cruise speed above the limit is planned at the limit; a ship at rest at the limit.
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 12.0, 0.0, 10.0).ref, 10.0);
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 0.0, 0.0, 10.0).ref, 10.0);
+  // The experiments' MaxSPD = RefSPD + 8, per ship (Table 3's ships: 25, 10, 5).
+  c.max_speed_over_ref = 8.0;
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 25.0, 0.0, 10.0).max, 33.0);
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 5.0, 0.0, 10.0).max, 13.0);
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 5.0, 0.0, 10.0).ref, 5.0);
+  // ref_speed overrides the cruise speed.
+  c.ref_speed = 20.0;
+  s = dssaShipSpeeds(c, 5.0, 0.0, 10.0);
+  EXPECT_DOUBLE_EQ(s.ref, 20.0);
+  EXPECT_DOUBLE_EQ(s.max, 28.0);
+  ParamMap p;
+  p.set("max_speed_over_ref", "nan");
+  EXPECT_THROW(DssaConfig::fromParams(p), std::invalid_argument);
+}
+
 TEST(DssaPlanner, AvoidsAConstantVelocityTargetDeterministically) {
   DssaPlanner planner("dssa_plus");
   EXPECT_EQ(planner.name(), "dssa_plus");

@@ -111,6 +111,16 @@ TEST(Scenario, UnitMistakesAreCaught) {
   expectError(replace(kGood, "planner: aco", "planner: astar"), "unknown planner");
 }
 
+TEST(Scenario, GoalRadiusNeedsAGoalAndAPositiveValue) {
+  const Scenario sc =
+      parseScenario(replace(kGood, "  planner: aco\n", "  planner: aco\n  goal_radius_m: 5\n"));
+  EXPECT_DOUBLE_EQ(sc.own.goal_radius, 5.0);
+  EXPECT_DOUBLE_EQ(sc.targets[2].goal_radius, 0.0);  // not given: the simulator's default
+  expectError(replace(kGood, "  planner: aco\n", "  planner: aco\n  goal_radius_m: -1\n"), "goal_radius_m");
+  expectError(replace(kGood, "    behaviour: constant\n", "    behaviour: constant\n    goal_radius_m: 5\n"),
+              "needs a goal");
+}
+
 TEST(Scenario, OverlappingShipsAreAnError) {
   expectError(replace(kGood, "position: {x_m: 3000, y_m: 3000}", "position: {x_m: 3, y_m: 3}"),
               "starts overlapping 'own'");

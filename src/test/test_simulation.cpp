@@ -87,6 +87,33 @@ TEST(Simulation, OwnShipWithoutPlannerSteersForItsGoalAndArrives) {
   EXPECT_GT(sim.own().arrival_time, 0.0);
 }
 
+TEST(Simulation, ArrivalIsJudgedAlongTheStepSoAFastShipCannotStepOverItsGoal) {
+  // 25 m/s with 1 s steps passes the goal 12.5 m ahead between two samples (0 and 25 m): with a 1 m
+  // arrival radius it arrives at the end of the first step, 12.5 m beyond the goal.
+  const std::string own = "  model: point\n  goal: {x_m: 0, y_m: 12.5}\n  goal_radius_m: 1\n";
+  std::string yaml =
+      scenarioYaml("  - {name: a, position: {x_m: 5000, y_m: 0}, course_deg: 0, speed_mps: 1}\n", own);
+  yaml.replace(yaml.find("speed_mps: 5"), 12, "speed_mps: 25");
+  SimConfig cfg;
+  cfg.dt = 1.0;
+  Simulation sim(parseScenario(yaml), cfg);
+  run(sim, 1.0);
+  EXPECT_FALSE(sim.own().arrived);  // judged when the next step starts
+  run(sim, 1.0);
+  ASSERT_TRUE(sim.own().arrived);
+  EXPECT_DOUBLE_EQ(sim.own().arrival_time, 1.0);
+  ASSERT_FALSE(sim.events().empty());
+  EXPECT_EQ(sim.events().back().type, SimEvent::Arrival);
+  EXPECT_NEAR(sim.events().back().distance, 12.5, 1e-9);
+  // Without a radius the default is max(200 m, 2 L): a goal 150 m off the track still counts.
+  const std::string wide = "  goal: {x_m: 150, y_m: 1000}\n";
+  Simulation sim2(parseScenario(
+      scenarioYaml("  - {name: a, position: {x_m: 5000, y_m: 0}, course_deg: 0, speed_mps: 1}\n", wide)));
+  sim2.setSetpoint("own", 0.0, 5.0);
+  run(sim2, 250.0);
+  EXPECT_TRUE(sim2.own().arrived);
+}
+
 TEST(Simulation, ThreeDofTargetFollowsASetpoint) {
   Simulation sim(parseScenario(scenarioYaml(
       "  - {name: b, model: wu_asv_40m, behaviour: planner, planner: ga, goal: {x_m: 5000, y_m: 5000},"

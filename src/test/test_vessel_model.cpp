@@ -127,6 +127,32 @@ TEST(KinematicModel, RejectsBadParameters) {
   EXPECT_THROW(KinematicModel{kp}, std::invalid_argument);
 }
 
+TEST(KinematicModel, PointModelTakesTheCommandedCourseAndSpeedAtOnce) {
+  // Hirayama et al. Fig. 1: each step a ship moves straight along her new intention. From the origin
+  // heading north at 10 m/s, a command of 090 at 20 m/s moves her (20, 0) in one second, not along an arc.
+  KinematicParams kp;
+  kp.instant = true;
+  KinematicModel m(kp);
+  VesselState st;
+  st.u = 10.0;
+  m.setState(st);
+  VesselInput in;
+  in.course = degToRad(90.0);
+  in.speed = 20.0;
+  m.step(in, Environment{}, 1.0);
+  EXPECT_NEAR(m.state().x, 20.0, 1e-12);
+  EXPECT_NEAR(m.state().y, 0.0, 1e-12);
+  EXPECT_NEAR(m.state().psi, degToRad(90.0), 1e-12);
+  EXPECT_NEAR(m.speedOverGround(), 20.0, 1e-12);
+  // Back to 000 at 5 m/s for 2 s in 0.5 s steps: (20, 10).
+  in.course = 0.0;
+  in.speed = 5.0;
+  for (int i = 0; i < 4; ++i)
+    m.step(in, Environment{}, 0.5);
+  EXPECT_NEAR(m.state().x, 20.0, 1e-12);
+  EXPECT_NEAR(m.state().y, 10.0, 1e-12);
+}
+
 // ---------------------------------------------------------------------------------------------------
 // 3-DOF model.
 

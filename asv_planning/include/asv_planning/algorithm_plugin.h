@@ -22,8 +22,8 @@ protected:
       : algorithm_(std::move(algorithm)), defaults_(std::move(defaults)) {}
 
 private:
-  asv::ParamMap defaults_;
   std::unique_ptr<asv::PlannerAlgorithm> algorithm_;
+  asv::ParamMap defaults_;
   std::string name_;
   bool initialized_ = false;
 };

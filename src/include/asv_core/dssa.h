@@ -82,6 +82,10 @@ struct DssaConfig {
   // the cruise speed; limits.max_speed if it has none). Default 0. Agents
   // take RefSPD/MinSPD/MaxSPD from DssaShipSpeeds instead.
   double ref_speed = 0.0;
+  // [m/s] MaxSPD (Sec. 4, the clamp of CurSPD + spc) = RefSPD + this when > 0; <= 0: the host's limit
+  // (the own ship's limits.max_speed, the ROS agent's max_speed, asv_batch's OwnShipLimits). The paper
+  // gives no MaxSPD; its experiments here use 8 (one largest speed change above RefSPD). Default 0.
+  double max_speed_over_ref = 0.0;
 
   // Throws std::invalid_argument naming the first bad field.
   void validate() const;
@@ -89,7 +93,7 @@ struct DssaConfig {
   // Keys (SI, angles in degrees at this edge): preset (applied first), speed_changes, alpha, beta, p,
   // time_window, time_step, detection_range, collision_distance, tcpa_floor, course_change_max_deg,
   // course_change_step_deg, speed_change_max, speed_change_step, max_rounds, max_search_time,
-  // ref_speed. Unknown keys are rejected; the result is validated.
+  // ref_speed, max_speed_over_ref. Unknown keys are rejected; the result is validated.
   static DssaConfig fromParams(const ParamMap& params);
   // The sea-scale defaults every ROS and batch run starts from (the paper's values are in its own
   // units: an 800 x 800 area, TimeWindow 20, detection range 500): a 10-minute window, intentions
@@ -117,6 +121,14 @@ struct DssaShipSpeeds {
   double min = 0.0;
   double max = 25.0;
 };
+
+// One ship's RefSPD, MinSPD and MaxSPD (Sec. 4) from the config and the host's view of the ship.
+// RefSPD = config.ref_speed when > 0, else the cruise speed (the speed the ship is planned at; the
+// maximum as RefSPD would make DSSA+ speed up in every encounter), else the limit; MaxSPD = RefSPD +
+// config.max_speed_over_ref when that is > 0, else max_limit (and RefSPD no more than it);
+// MinSPD = min_limit within [0, MaxSPD].
+DssaShipSpeeds dssaShipSpeeds(const DssaConfig& config, double cruise_speed, double min_limit,
+                              double max_limit);
 
 // One ship's tentative intention as exchanged between ships (Sec. 3.2, Sec. 4): what the ship will
 // steer and at what speed after one time step, and where it is now.
@@ -175,7 +187,8 @@ public:
   double inefficiency(double crs, double spc) const;
   // Course change to the destination, crs_dest (Sec. 3.2) [rad], in [-pi, pi).
   double destinationCourseChange() const;
-  // Number of (crs, spc) pairs in the domain now (at most 20 in DSSA, 180 in DSSA+; Fig. 3).
+  // Number of (crs, spc) pairs in the domain now (at most 20 in DSSA, 180 in DSSA+; Fig. 3; one course
+  // more, straight for the goal, when the goal is within this step's move but beyond the turn limit).
   int domainSize() const { return static_cast<int>(cand_.size()); }
 
 private:

@@ -27,7 +27,7 @@ const char* toString(Behaviour b);
 struct ScenarioShip {
   std::string name;
   uint32_t mmsi = 0;                // 0: the simulator assigns one
-  std::string model = "kinematic";  // vessel preset: kinematic | <3-DOF preset name>
+  std::string model = "kinematic";  // vessel preset: kinematic | point | <3-DOF preset name>
   char ais_class = 'A';             // 'A' (types 1/5) or 'B' (types 18/24) for NMEA emission
   double length = 0.0;              // [m] overall length (0: the model's)
   double beam = 0.0;                // [m]
@@ -35,7 +35,8 @@ struct ScenarioShip {
   double course = 0.0;                                 // [rad] nautical
   double speed = 0.0;                                  // [m/s]
   std::optional<Eigen::Vector2d> goal;                 // [m] ENU
-  std::string planner;                                 // plugin short name; empty: none
+  double goal_radius = 0.0;  // [m] arrival radius round the goal; 0: the simulator's (max(200 m, 2 L))
+  std::string planner;       // plugin short name; empty: none
   Behaviour behaviour = Behaviour::Constant;  // targets only; the own ship plans (or steers for its goal)
   std::vector<Eigen::Vector2d> waypoints;     // [m] ENU, for Behaviour::Waypoints
 };

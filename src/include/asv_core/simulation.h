@@ -52,8 +52,10 @@ struct SimVessel {
   double course_sp = 0.0, speed_sp = 0.0;          // [rad], [m/s] current set-points
   double cruise_course = 0.0, cruise_speed = 0.0;  // what the ship does when nothing disturbs it
   std::optional<Eigen::Vector2d> goal;
+  double goal_radius = 0.0;  // [m] arrival radius; 0: max(traffic.waypoint_acceptance, 2 L)
   std::vector<Eigen::Vector2d> waypoints;
   size_t wp_index = 0;
+  Eigen::Vector2d step_from = Eigen::Vector2d::Zero();  // [m] position at the start of the last step
   bool arrived = false;
   double arrival_time = -1.0;
   bool giving_way = false;  // give_way behaviour: alteration in progress

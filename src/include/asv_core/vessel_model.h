@@ -99,6 +99,10 @@ struct KinematicParams {
   // Not given in the paper; 10 s is of the order of a rudder's hard-over time.
   double t01 = 10.0;
   double length = 100.0;  // [m] ship length, for display and safety distances only
+  // A point that takes the commanded course and speed at once (scenario model `point`): Hirayama et al.
+  // (2019) Fig. 1, where a ship "moves" each time step along her chosen course with no turning delay.
+  // omega and t01 are then unused.
+  bool instant = false;
   void validate() const;
 };
 
