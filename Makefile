@@ -15,7 +15,7 @@ CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES=""
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test bench demo clean format eval dssa-results test-asan fuzz-long
+.PHONY: help setup build test bench demo clean format eval dssa-results soak test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
@@ -25,6 +25,7 @@ help:
 	@echo "  make bench   run the Google Benchmark executables, JSON into out/bench/"
 	@echo "  make eval    every scenario with every planner through asv_batch (out/eval/)"
 	@echo "  make dssa-results  the DSSA paper's three experiments through asv_batch -> docs/results/dssa.md"
+	@echo "  make soak    2 simulated hours, 50 ships, the whole ROS pipeline: memory and rates (out/soak/)"
 	@echo "  make test-asan  build and run the asv_core unit tests under ASan+UBSan (build_asan/)"
 	@echo "  make fuzz-long  run each libFuzzer target for FUZZ_RUNS executions (10 M), out/fuzz/summary.txt"
 	@echo "  make setup   install the Debian packages the stack needs (scripts/setup)"
@@ -92,6 +93,12 @@ eval: build
 # Hirayama et al. (2019) Sec. 5, Tables 1-3, through asv_batch: docs/results/dssa.md (scripts/dssa_results.py).
 dssa-results: build
 	@$(DEVEL) && scripts/dssa_results.py
+
+# Soak (docs/reliability.md): SOAK_SIM_TIME simulated seconds of asv_bringup/test/soak_50_ships.yaml through
+# the whole pipeline as fast as it sustains; out/soak/summary.json, exit 1 on a failed criterion.
+SOAK_SIM_TIME ?= 7200
+soak: build
+	@$(DEVEL) && scripts/soak.py --sim-time $(SOAK_SIM_TIME)
 
 # Reliability (docs/reliability.md): the asv_core unit tests under AddressSanitizer, LeakSanitizer and
 # UndefinedBehaviorSanitizer in build_asan/, JUnit XML in build/test_results/asan/.

@@ -1,6 +1,10 @@
 #!/usr/bin/python3
-"""Node-fault rostest: the planner node killed mid-encounter is respawned by scenario.launch and is
-planning again within 2 s of wall time, and the run still passes clear.
+"""Node-fault rostest:
+- the planner node killed mid-encounter is respawned by scenario.launch and is planning again within 2 s
+  of wall time, and the run still passes clear;
+- a plugin that overruns its time budget (fault injection: ~fault_plan_delay makes every plan 1.2 s long,
+  budget 0.5 s, overrun_factor 2) is not flown: the fallback is in force, the plan says why, and the
+  planner's diagnostics turn WARN with the reason.
 
 Run by rostest (test/faults.test), which provides the master.
 """
@@ -15,14 +19,51 @@ import unittest
 import rospy
 import rosunit
 from asv_msgs.msg import Plan
-from diagnostic_msgs.msg import DiagnosticArray
+from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 
 RESPAWN_LIMIT = 2.0  # [s, wall] from the kill to the first plan of the new planner node
 
 
 class NodeFaults(unittest.TestCase):
-    def test_planner_respawns_and_plans_within_2_s(self):
+    @classmethod
+    def setUpClass(cls):
         rospy.init_node("fault_tests", anonymous=True, disable_signals=True)
+
+    def test_overrunning_plugin_falls_back_visibly(self):
+        plans = []
+        warnings = []
+        rospy.set_param("/planner_own/fault_plan_delay", 1.2)
+        s1 = rospy.Subscriber("/own/plan", Plan, plans.append, queue_size=100)
+
+        def diag(m):
+            for s in m.status:
+                if "planner" in s.name and s.level == DiagnosticStatus.WARN:
+                    warnings.append(s.message)
+        s2 = rospy.Subscriber("/diagnostics", DiagnosticArray, diag, queue_size=100)
+        out = tempfile.mkdtemp(prefix="asv_overrun_")
+        launch = subprocess.Popen(
+            ["roslaunch", "asv_bringup", "scenario.launch", "scenario:=head_on", "planner:=mopso", "rate:=10",
+             "max_sim_time:=1300", "start_delay:=1.0", "out:=" + out, "output:=log"],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+        try:
+            deadline = time.monotonic() + 90.0
+            while time.monotonic() < deadline and not (plans and any("overran" in w for w in warnings)):
+                time.sleep(0.2)
+        finally:
+            launch.terminate()
+            log = launch.communicate(timeout=60)[0].decode(errors="replace")
+            rospy.delete_param("/planner_own/fault_plan_delay")
+            s1.unregister()
+            s2.unregister()
+        self.assertTrue(plans, "no plan from the planner node:\n" + log[-3000:])
+        self.assertTrue(all(p.status == Plan.STATUS_FALLBACK for p in plans),
+                        "a late plan was flown: %s" % [p.message for p in plans if p.status != Plan.STATUS_FALLBACK])
+        self.assertIn("overran its time budget", plans[0].message)
+        self.assertGreaterEqual(plans[0].compute_time, 1.2)
+        self.assertTrue(any("overran its time budget" in w for w in warnings),
+                        "planner diagnostics never warned: %s" % warnings[-5:])
+
+    def test_planner_respawns_and_plans_within_2_s(self):
         plans = []
         planner_diag = []
         rospy.Subscriber("/own/plan", Plan, lambda m: plans.append((time.monotonic(), m)), queue_size=100)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
@@ -29,6 +30,8 @@ const std::set<std::string> kKnownParams = {"planner",
                                             "replan_period",
                                             "min_replan_interval",
                                             "time_budget",
+                                            "overrun_factor",
+                                            "fault_plan_delay",
                                             "setpoint_rate",
                                             "waypoint_acceptance",
                                             "fallback_speed_factor",
@@ -70,9 +73,12 @@ void flatten(const XmlRpc::XmlRpcValue& v, const std::string& prefix, asv::Param
   }
 }
 
+// Reads ~key into value when it is set; a value of the wrong type is an error, not the default.
 template <typename T>
 void get(const ros::NodeHandle& pnh, const std::string& key, T& value) {
-  pnh.param(key, value, value);
+  if (pnh.hasParam(key) && !pnh.getParam(key, value))
+    throw std::invalid_argument("parameter '" + pnh.resolveName(key) +
+                                "' has the wrong type (see asv_planning/config/planner_node.yaml)");
 }
 
 }  // namespace
@@ -87,6 +93,8 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   get(pnh, "replan_period", p.replan_period);
   get(pnh, "min_replan_interval", p.min_replan_interval);
   get(pnh, "time_budget", p.time_budget);
+  get(pnh, "overrun_factor", p.overrun_factor);
+  get(pnh, "fault_plan_delay", p.fault_plan_delay);
   get(pnh, "setpoint_rate", p.setpoint_rate);
   get(pnh, "waypoint_acceptance", p.waypoint_acceptance);
   get(pnh, "fallback_speed_factor", p.fallback_speed_factor);
@@ -109,7 +117,8 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   }
   if (!(p.replan_period > 0 && p.min_replan_interval >= 0 && p.time_budget > 0 && p.setpoint_rate > 0 &&
         p.waypoint_acceptance > 0 && p.fallback_speed_factor >= 0 && p.fallback_speed_factor <= 1 &&
-        p.extremis_range >= 0 && p.stale_after > 0 && p.limits.max_speed > 0))
+        p.extremis_range >= 0 && p.stale_after > 0 && p.limits.max_speed > 0 && p.overrun_factor >= 1 &&
+        p.fault_plan_delay >= 0 && p.fault_plan_delay <= 60))
     throw std::invalid_argument("planner_node: a parameter is out of range (see config/planner_node.yaml)");
 
   // Unknown private keys are typos, except the plugin's own subtree.
@@ -195,6 +204,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   fc.stand_on_policy = p.stand_on_policy;
   fc.risk_clear_time = p.risk_clear_time;
   follower_ = std::make_unique<asv::PlanFollower>(fc);  // validates: throws on a bad value
+  follower_config_ = fc;
   if (p.has_goal)
     follower_->setGoal(p.goal);
   follower_->setObstacles(obstacles_);
@@ -214,7 +224,27 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
            p.has_goal ? "set" : "none", p.time_budget);
 }
 
+void PlannerNode::checkClock() {
+  if (!clock_.jumpedBack(ros::Time::now().toSec()))
+    return;
+  ROS_WARN(
+      "planner_node: time went back %.1f s (a looping bag or a restarted clock): own ship, targets, "
+      "risk and plan dropped",
+      clock_.lastJump());
+  own_.reset();
+  risk_.reset();
+  targets_.reset();
+  follower_ = std::make_unique<asv::PlanFollower>(follower_config_);
+  if (params_.has_goal)
+    follower_->setGoal(params_.goal);
+  follower_->setObstacles(obstacles_);
+  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
+  // caught up with the time before the jump.
+  updater_.force_update();
+}
+
 void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
+  checkClock();
   const std::optional<asv::ShipState> s = shipStateFromOdometry(*msg, params_.ship);
   if (!s) {
     ROS_WARN_THROTTLE(5.0, "planner_node: non-finite odometry ignored");
@@ -225,9 +255,11 @@ void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
 }
 
 void PlannerNode::riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg) {
+  checkClock();
   risk_ = msg;
 }
 void PlannerNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
+  checkClock();
   targets_ = msg;
 }
 
@@ -246,17 +278,21 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
   std::vector<asv::PlannerTarget> out;
   const ros::Time now = ros::Time::now();
   std::map<std::string, const asv_msgs::TargetRisk*> risk_by_id;
-  if (risk_ && (now - risk_->header.stamp).toSec() < params_.stale_after)
+  // A message stamped in the future (beyond clock jitter) is as unusable as an old one.
+  auto fresh = [&](const ros::Time& stamp) {
+    const double age = (now - stamp).toSec();
+    return age < params_.stale_after && age > -1.0;
+  };
+  if (risk_ && fresh(risk_->header.stamp))
     for (const auto& r : risk_->targets)
       risk_by_id[r.target_id] = &r;
-  if (!targets_ || (now - targets_->header.stamp).toSec() >= params_.stale_after)
+  if (!targets_ || !fresh(targets_->header.stamp))
     return out;
   // While the risk node is alive, a target it has not assessed yet (a new track, or the first second
   // of a run) is left out: planned against without its encounter and role, the own ship could give
   // way to a ship it should stand on for, or pass on the wrong side. Without a risk node (no recent
   // RiskAssessment) every target is planned against, risk-blind.
-  const bool risk_alive =
-      !risk_by_id.empty() || (risk_ && (now - risk_->header.stamp).toSec() < params_.stale_after);
+  const bool risk_alive = !risk_by_id.empty() || (risk_ && fresh(risk_->header.stamp));
   for (const auto& t : targets_->targets) {
     if (t.id == params_.ship ||
         !asv::allFinite({t.position.x, t.position.y, t.course_over_ground, t.speed_over_ground}))
@@ -298,14 +334,21 @@ void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerT
     ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), e.what());
     plan = follower_->fallback(targets, std::string("plugin error: ") + e.what());
   }
+  if (params_.fault_plan_delay > 0.0)
+    ros::WallDuration(params_.fault_plan_delay).sleep();  // fault injection: a plugin that overruns
   last_compute_ = (ros::WallTime::now() - start).toSec();
   max_compute_ = std::max(max_compute_, last_compute_);
-  plan.compute_time = last_compute_;
-  if (last_compute_ > 1.5 * params_.time_budget) {
+  if (last_compute_ > params_.overrun_factor * params_.time_budget) {
+    // Made for a picture now overrun_factor budgets old: not flown. The fallback keeps the ship safe
+    // until the next plan comes in time (diagnostics WARN with this reason).
     ++overruns_;
-    ROS_WARN_THROTTLE(5.0, "planner_node: '%s' took %.3f s (budget %.3f s)", params_.planner.c_str(),
-                      last_compute_, params_.time_budget);
+    char why_late[160];
+    std::snprintf(why_late, sizeof why_late, "plugin overran its time budget: %.3f s > %.1f x %.3f s",
+                  last_compute_, params_.overrun_factor, params_.time_budget);
+    ROS_WARN_THROTTLE(5.0, "planner_node: '%s' %s; fallback in force", params_.planner.c_str(), why_late);
+    plan = follower_->fallback(targets, why_late);
   }
+  plan.compute_time = last_compute_;
   const asv::Plan& in_force = follower_->acceptPlan(std::move(plan), now, targets, why);
   plan_stamp_ = ros::Time::now();
   last_reason_ = why;
@@ -379,6 +422,7 @@ void PlannerNode::publishSetpoint() {
 }
 
 void PlannerNode::timerCallback(const ros::TimerEvent&) {
+  checkClock();
   if (!own_) {
     ROS_WARN_THROTTLE(10.0, "planner_node: waiting for odometry on %s", odom_sub_.getTopic().c_str());
     return;
@@ -396,6 +440,7 @@ void PlannerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("replans", follower_->replans());
   stat.add("fallbacks", follower_->fallbacks());
   stat.add("budget overruns", overruns_);
+  stat.add("clock jumps back (state reset)", clock_.jumps());
   stat.add("last compute time [s]", last_compute_);
   stat.add("max compute time [s]", max_compute_);
   stat.add("last replan reason", last_reason_);

@@ -113,7 +113,22 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
            params_.frame_id.c_str());
 }
 
+void AisNode::checkClock() {
+  if (!clock_.jumpedBack(ros::Time::now().toSec()))
+    return;
+  ROS_WARN(
+      "ais_node: time went back %.1f s (a looping bag or a restarted clock): %zu ships and the "
+      "pending fragments forgotten",
+      clock_.lastJump(), ships_.size());
+  ships_.clear();
+  decoder_.clearPending();
+  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
+  // caught up with the time before the jump.
+  updater_.force_update();
+}
+
 void AisNode::handleLine(const std::string& line, const ros::Time& stamp) {
+  checkClock();
   const double now = stamp.toSec();
   framer_.frame(line, [&](const asv::nmea::Sentence& s) {
     last_sentence_ = ros::WallTime::now();
@@ -259,6 +274,7 @@ void AisNode::mergeStatic(asv_msgs::Target& t) const {
 }
 
 void AisNode::publish() {
+  checkClock();
   const ros::Time now = ros::Time::now();
   decoder_.expire(now.toSec());
   asv_msgs::TargetArray arr;
@@ -305,6 +321,7 @@ void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("messages decoded", c.messages);
   stat.add("reassembly drops", reassembly_drops);
   stat.add("fragments pending", decoder_.pendingCount());
+  stat.add("clock jumps back (state reset)", clock_.jumps());
   stat.add("decode errors (fields, fill bits, armour, length, part)", decode_errors);
   stat.add("unsupported message types", c.unsupported);
   stat.add("rejected values", rejected_values);
@@ -323,6 +340,10 @@ void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
                   input_->source().c_str());
   else if (silent > params_.silence_warning)
     stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "no sentence for %.0f s", silent);
+  else if (in.drops() > diag_drops_)
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN,
+                  "%lu input lines dropped since the last report (overload)",
+                  static_cast<unsigned long>(in.drops() - diag_drops_));
   else if (rejected > diag_rejected_)
     stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "%lu inputs rejected since the last report",
                   static_cast<unsigned long>(rejected - diag_rejected_));
@@ -331,6 +352,7 @@ void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   diag_time_ = now;
   diag_sentences_ = framer_.sentences();
   diag_rejected_ = rejected;
+  diag_drops_ = in.drops();
 }
 
 }  // namespace asv_risk

@@ -110,7 +110,22 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
            targets_pub_.getTopic().c_str());
 }
 
+void ArpaNode::checkClock() {
+  if (!clock_.jumpedBack(ros::Time::now().toSec()))
+    return;
+  ROS_WARN(
+      "arpa_node: time went back %.1f s (a looping bag or a restarted clock): %zu radar targets and "
+      "the own ship forgotten",
+      clock_.lastJump(), radars_.size());
+  radars_.clear();
+  has_odom_ = has_osd_heading_ = false;
+  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
+  // caught up with the time before the jump.
+  updater_.force_update();
+}
+
 void ArpaNode::handleLine(const std::string& line, const ros::Time& stamp) {
+  checkClock();
   framer_.frame(line, [&](const asv::nmea::Sentence& s) {
     last_sentence_ = ros::WallTime::now();
     handleSentence(s, stamp);
@@ -311,6 +326,7 @@ void ArpaNode::handleOsd(const asv::nmea::Sentence& s, const ros::Time& stamp) {
 }
 
 void ArpaNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
+  checkClock();
   const auto& q = msg->pose.pose.orientation;
   const auto& x = msg->pose.pose.position;
   std::string frame = msg->header.frame_id;
@@ -329,6 +345,7 @@ void ArpaNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
 }
 
 void ArpaNode::publish() {
+  checkClock();
   const ros::Time now = ros::Time::now();
   asv_msgs::TargetArray arr;
   arr.header.stamp = now;
@@ -376,6 +393,7 @@ void ArpaNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("targets known", radars_.size());
   stat.add("own position known", has_odom_);
   stat.add("target arrays published", published_);
+  stat.add("clock jumps back (state reset)", clock_.jumps());
   input_->diagnose(stat);
   const NmeaInputStats in = input_->stats();
   const double silent = (now - last_sentence_).toSec();
@@ -384,6 +402,10 @@ void ArpaNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
                   input_->source().c_str());
   else if (silent > params_.silence_warning)
     stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "no sentence for %.0f s", silent);
+  else if (in.drops() > diag_drops_)
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN,
+                  "%lu input lines dropped since the last report (overload)",
+                  static_cast<unsigned long>(in.drops() - diag_drops_));
   else if (rejected > diag_rejected_)
     stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "%lu inputs rejected since the last report",
                   static_cast<unsigned long>(rejected - diag_rejected_));
@@ -394,6 +416,7 @@ void ArpaNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   diag_time_ = now;
   diag_sentences_ = framer_.sentences();
   diag_rejected_ = rejected;
+  diag_drops_ = in.drops();
 }
 
 }  // namespace asv_risk

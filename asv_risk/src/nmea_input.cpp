@@ -260,6 +260,8 @@ void NmeaInput::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) cons
     stat.add("connection failures", s.failures);
     stat.add("queued lines", queued);
     stat.add("lines dropped: queue full", s.queue_drops);
+    if (params_.type == "udp")
+      stat.add("datagrams dropped: socket buffer full", s.kernel_drops);
   }
   stat.add("lines dropped: oversize", s.oversize);
   if (params_.type == "file")
@@ -302,6 +304,7 @@ void NmeaInput::runUdp() {
     throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
   const int one = 1;
   ::setsockopt(s.fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
+  ::setsockopt(s.fd, SOL_SOCKET, SO_RXQ_OVFL, &one, sizeof(one));  // count the kernel's drops
   sockaddr_in a{};
   a.sin_family = AF_INET;
   a.sin_port = htons(static_cast<std::uint16_t>(params_.udp_port));
@@ -318,13 +321,28 @@ void NmeaInput::runUdp() {
         throw std::runtime_error(std::string("poll: ") + std::strerror(errno));
       continue;
     }
-    // A datagram larger than the buffer is truncated by the kernel; its tail never reaches us.
-    const ssize_t n = ::recv(s.fd, buf.data(), buf.size(), 0);
+    // A datagram larger than the buffer is truncated by the kernel; its tail never reaches us. The
+    // ancillary SO_RXQ_OVFL value is the kernel's count of datagrams dropped on this socket so far.
+    iovec iov{buf.data(), buf.size()};
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(std::uint32_t))];
+    msghdr msg{};
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control;
+    msg.msg_controllen = sizeof control;
+    const ssize_t n = ::recvmsg(s.fd, &msg, 0);
     if (n < 0) {
       if (errno == EINTR || errno == EAGAIN)
         continue;
       throw std::runtime_error(std::string("recv: ") + std::strerror(errno));
     }
+    for (cmsghdr* c = CMSG_FIRSTHDR(&msg); c != nullptr; c = CMSG_NXTHDR(&msg, c))
+      if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SO_RXQ_OVFL) {
+        std::uint32_t dropped = 0;
+        std::memcpy(&dropped, CMSG_DATA(c), sizeof dropped);
+        std::lock_guard<std::mutex> lock(mutex_);
+        stats_.kernel_drops = dropped;
+      }
     addBytes(buf.data(), static_cast<std::size_t>(n), true, false);
   }
 }

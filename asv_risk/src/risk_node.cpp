@@ -168,7 +168,22 @@ bool RiskNode::transformToWorking(const std::string& frame, const ros::Time& sta
   }
 }
 
+void RiskNode::checkClock() {
+  if (!clock_.jumpedBack(ros::Time::now().toSec()))
+    return;
+  ROS_WARN(
+      "risk_node: time went back %.1f s (a looping bag or a restarted clock): own ship and "
+      "compliance histories reset",
+      clock_.lastJump());
+  own_.reset();
+  assessor_.reset();
+  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
+  // caught up with the time before the jump.
+  updater_.force_update();
+}
+
 void RiskNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
+  checkClock();
   asv::ShipState s;
   tf2::Transform t;
   if (!transformToWorking(msg->header.frame_id, msg->header.stamp, t)) {
@@ -193,6 +208,7 @@ void RiskNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
 }
 
 void RiskNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
+  checkClock();
   const ros::Time now = ros::Time::now();
   targets_seen_ += msg->targets.size();
   if (!own_) {
@@ -323,6 +339,7 @@ void RiskNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     total += rejected_[i];
   }
   stat.add("assessments", assessments_);
+  stat.add("clock jumps back (state reset)", clock_.jumps());
   stat.add("targets received", targets_seen_);
   stat.add("own odometry rejected", odom_rejected_);
   stat.add("own ship known", own_.has_value());

@@ -153,6 +153,7 @@ void TrackerNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
   if (!frame.empty() && frame[0] == '/')
     frame.erase(0, 1);
   const ros::Time now = ros::Time::now();
+  checkClock(now);
   for (const asv_msgs::Target& t : msg->targets) {
     if (frame != params_.frame_id) {
       reject(TrackReject::kFrame, t.id);
@@ -232,8 +233,23 @@ asv_msgs::Target TrackerNode::toMsg(const asv::TrackEstimate& e) const {
   return t;
 }
 
+bool TrackerNode::checkClock(const ros::Time& now) {
+  if (!clock_.jumpedBack(now.toSec()))
+    return false;
+  ROS_WARN("tracker: time went back %.1f s (a looping bag or a restarted clock): %zu tracks dropped",
+           clock_.lastJump(), tracker_.tracks().size());
+  tracker_.clear();
+  ais_meta_.clear();
+  arpa_meta_.clear();
+  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
+  // caught up with the time before the jump.
+  updater_.force_update();
+  return true;
+}
+
 void TrackerNode::publish() {
   const ros::Time now = ros::Time::now();
+  checkClock(now);
   tracker_.maintain(now.toSec());
   asv_msgs::TargetArray arr;
   arr.header.stamp = now;
@@ -278,6 +294,7 @@ void TrackerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("track-to-track merges", c.merged);
   stat.add("radar pairings split", c.split);
   stat.add("tracks dropped", c.dropped);
+  stat.add("clock jumps back (state reset)", clock_.jumps());
   if (rejected > diag_rejected_)
     stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "%lu reports rejected since the last report",
                   static_cast<unsigned long>(rejected - diag_rejected_));

@@ -128,6 +128,12 @@ void EvaluatorNode::start(const asv_msgs::TargetArray& first) {
 void EvaluatorNode::shipsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
   if (done_)
     return;
+  if (clock_.jumpedBack(msg->header.stamp.toSec()) && recorder_) {
+    ROS_WARN("evaluator_node: the run's time went back %.1f s (a looping bag?): recording starts again",
+             clock_.lastJump());
+    recorder_.reset();
+    arrived_.clear();
+  }
   try {
     if (!recorder_)
       start(*msg);

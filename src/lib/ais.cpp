@@ -498,6 +498,12 @@ void Decoder::expire(double now) {
   }
 }
 
+void Decoder::clearPending() {
+  for (auto& p : pending_)
+    p.used = false;
+  npending_ = 0;
+}
+
 Status Decoder::complete(std::string_view armoured, int fill, Message& out) {
   payload_.clear();
   if (!payload_.append(armoured))

@@ -327,7 +327,7 @@ Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
     throw ScenarioError(source + ": a scenario file must be a YAML mapping");
   c.onlyKeys(root, "",
              {"format", "name", "description", "duration_s", "origin", "safety", "own_ship", "targets",
-              "static_obstacles", "planner_params"});
+              "static_obstacles", "planner_params", "sensor_faults"});
   Scenario s;
   s.source = source;
   // Compared as a double: casting an arbitrary number (1e300) to int first is undefined behaviour.
@@ -416,6 +416,45 @@ Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
       s.obstacles.push_back(std::move(o));
     }
   }
+  if (root["sensor_faults"]) {
+    const YAML::Node fl = root["sensor_faults"];
+    if (!fl.IsSequence())
+      c.fail(fl, "sensor_faults", "expected a list");
+    for (size_t i = 0; i < fl.size(); ++i) {
+      const std::string w = "sensor_faults[" + std::to_string(i) + "]";
+      c.onlyKeys(fl[i], w, {"type", "ship", "with", "start_s", "duration_s"});
+      SensorFault f;
+      const std::string type = c.text(fl[i], "type", w + ".");
+      if (type == "ais_silence")
+        f.type = SensorFault::Type::AisSilence;
+      else if (type == "radar_loss")
+        f.type = SensorFault::Type::RadarLoss;
+      else if (type == "radar_swap")
+        f.type = SensorFault::Type::RadarSwap;
+      else
+        c.fail(fl[i]["type"], w + ".type", "must be ais_silence, radar_loss or radar_swap");
+      auto target = [&](const std::string& key) {
+        const std::string name = c.text(fl[i], key, w + ".");
+        for (const auto& t : s.targets)
+          if (t.name == name)
+            return name;
+        c.fail(fl[i][key], w + "." + key, "no target named '" + name + "'");
+      };
+      f.ship = target("ship");
+      if (f.type == SensorFault::Type::RadarSwap) {
+        f.with = target("with");
+        if (f.with == f.ship)
+          c.fail(fl[i]["with"], w + ".with", "a ship cannot swap with herself");
+      } else if (fl[i]["with"]) {
+        c.fail(fl[i]["with"], w + ".with", "only for radar_swap");
+      }
+      f.start = c.number(fl[i], "start_s", w + ".");
+      f.duration = c.number(fl[i], "duration_s", w + ".");
+      if (!(f.start >= 0.0) || !(f.duration > 0.0) || f.start + f.duration > 1e7)
+        c.fail(fl[i], w, "needs start_s >= 0 and duration_s > 0");
+      s.sensor_faults.push_back(f);
+    }
+  }
   if (root["planner_params"]) {
     std::size_t budget = kMaxPlannerParamNodes;
     flatten(c, root["planner_params"], "", s.planner_params, budget);
@@ -424,6 +463,18 @@ Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
 }
 
 }  // namespace
+
+const char* toString(SensorFault::Type t) {
+  switch (t) {
+    case SensorFault::Type::AisSilence:
+      return "ais_silence";
+    case SensorFault::Type::RadarLoss:
+      return "radar_loss";
+    case SensorFault::Type::RadarSwap:
+      return "radar_swap";
+  }
+  return "?";
+}
 
 Scenario parseScenario(const std::string& yaml_text, const std::string& source) {
   try {

@@ -342,6 +342,23 @@ void NmeaEmitter::update(const Simulation& sim, std::vector<std::string>& ais,
     }
     next_scan_ = t;
   }
+  const std::vector<SensorFault>& faults = sim.scenario().sensor_faults;
+  loss_announced_.resize(faults.size(), 0);
+  auto faulty = [&](const SimVessel& v, SensorFault::Type type) {
+    for (const auto& f : faults)
+      if (f.type == type && f.ship == v.name && f.active(t))
+        return true;
+    return false;
+  };
+  // Radar target number of vessel i: its index, or its partner's during a swap.
+  auto radarNumber = [&](size_t i) {
+    for (const auto& f : faults)
+      if (f.type == SensorFault::Type::RadarSwap && f.active(t) &&
+          (f.ship == vs[i].name || f.with == vs[i].name))
+        if (const SimVessel* other = sim.find(f.ship == vs[i].name ? f.with : f.ship))
+          return static_cast<int>(other - vs.data());
+    return static_cast<int>(i);
+  };
   auto send = [&](const ais::BitWriter& w) {
     channel_b_ = !channel_b_;
     const auto lines = ais::toSentences(w, channel_b_ ? 'B' : 'A', seq_);
@@ -356,6 +373,11 @@ void NmeaEmitter::update(const Simulation& sim, std::vector<std::string>& ais,
     const SimVessel& v = vs[i];
     if (v.arrived)
       continue;
+    if (faulty(v, SensorFault::Type::AisSilence)) {
+      next_static_[i] = std::max(next_static_[i], t);  // the first reports go out when she is back
+      next_pos_[i] = std::max(next_pos_[i], t);
+      continue;
+    }
     if (t >= next_static_[i]) {
       next_static_[i] = t + cfg_.static_interval;
       const uint32_t bow = static_cast<uint32_t>(std::lround(v.length / 2)),
@@ -427,10 +449,27 @@ void NmeaEmitter::update(const Simulation& sim, std::vector<std::string>& ais,
       const double range = rel.norm();
       if (range > cfg_.radar_range)
         continue;
+      bool lost = false;
+      for (size_t k = 0; k < faults.size(); ++k)
+        if (faults[k].type == SensorFault::Type::RadarLoss && faults[k].ship == v.name &&
+            faults[k].active(t)) {
+          lost = true;
+          if (!loss_announced_[k]) {  // the ARPA declares the target lost once, then drops it
+            loss_announced_[k] = 1;
+            arpa::TtmOut o;
+            o.number = radarNumber(i);
+            o.status = 'L';
+            o.utc_seconds_of_day = std::fmod(t, 86400.0);
+            ttm.push_back(arpa::encodeTtm(o));
+            ++ttm_sent_;
+          }
+        }
+      if (lost)
+        continue;
       if (cfg_.radar_dropout > 0.0 && unit(rng_) < cfg_.radar_dropout)
         continue;
       arpa::TtmOut o;
-      o.number = static_cast<int>(i);
+      o.number = radarNumber(i);
       o.distance = std::max(0.0, range + cfg_.range_noise * gauss(rng_));
       o.bearing = wrapTwoPi(courseOf(rel) + degToRad(cfg_.bearing_noise_deg) * gauss(rng_));
       o.speed = std::max(0.0, v.sog() + knotsToMps(cfg_.speed_noise_kn) * gauss(rng_));

@@ -551,6 +551,15 @@ TEST(AisReassembly, TimeoutAndBoundedMemory) {
   d.expire(1000.0);
   EXPECT_EQ(d.pendingCount(), 0u);
 
+  // clearPending (the clock went back): a first fragment is forgotten, uncounted, so its second part
+  // is an orphan.
+  const uint64_t timeouts = d.counters().timeouts;
+  EXPECT_EQ(decodeLine(d, kT5p1A, m, 50.0), Status::kPending);
+  d.clearPending();
+  EXPECT_EQ(d.pendingCount(), 0u);
+  EXPECT_EQ(d.counters().timeouts, timeouts);
+  EXPECT_EQ(decodeLine(d, kT5p2A, m, 50.0), Status::kOrphanFragment);
+
   DecoderConfig bad;
   bad.max_pending = 0;
   EXPECT_THROW(bad.validate(), std::invalid_argument);

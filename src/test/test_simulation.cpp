@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "asv_core/ais.h"
+#include "asv_core/arpa.h"
+#include "asv_core/nmea.h"
 #include "asv_core/simulation.h"
 
 using namespace asv;
@@ -195,4 +199,76 @@ TEST(NmeaEmitter, SameSeedSameSentences) {
   };
   EXPECT_EQ(stream(3), stream(3));
   EXPECT_NE(stream(3), stream(4));  // the noise differs
+}
+
+TEST(NmeaEmitter, SensorFaultsSilenceLoseAndSwap) {
+  // a is silent on AIS in [10, 40) s, lost by the radar in [50, 60) s, and swaps radar numbers with b in
+  // [70, 80) s. Every other report of the 100 s goes out as without faults.
+  std::string yaml = scenarioYaml(
+      "  - {name: a, mmsi: 244000001, position: {x_m: 3000, y_m: 1000}, course_deg: 270, speed_kn: 10}\n"
+      "  - {name: b, mmsi: 244000002, position: {x_m: -2000, y_m: 500}, course_deg: 45, speed_kn: 10}\n");
+  yaml +=
+      "sensor_faults:\n"
+      "  - {type: ais_silence, ship: a, start_s: 10, duration_s: 30}\n"
+      "  - {type: radar_loss, ship: a, start_s: 50, duration_s: 10}\n"
+      "  - {type: radar_swap, ship: a, with: b, start_s: 70, duration_s: 10}\n";
+  Simulation sim(parseScenario(yaml));
+  EmitterConfig ec;
+  ec.radar_dropout = 0.0;
+  NmeaEmitter em(ec, 7);
+  ais::Decoder dec;
+  std::vector<double> a_reports;
+  int lost_a = 0, tracked_a_in_loss = 0, swapped = 0, unswapped_in_swap = 0, normal = 0;
+  for (int k = 0; k < 1000; ++k) {  // 100 s
+    const double t = sim.time();
+    std::vector<std::string> ais_lines, ttm_lines;
+    em.update(sim, ais_lines, ttm_lines);
+    for (const auto& l : ais_lines) {
+      ais::Message m;
+      ais::Kinematics kin;
+      if (dec.feedLine(l, t, m) == ais::Status::kMessage && m.mmsi == 244000001u && ais::toKinematics(m, kin))
+        a_reports.push_back(t);
+    }
+    for (const auto& l : ttm_lines) {
+      nmea::Sentence s;
+      ASSERT_EQ(nmea::parseSentence(l, s), nmea::Reject::kNone) << l;
+      arpa::TrackedTarget tt;
+      ASSERT_EQ(arpa::parseTtm(s, tt), arpa::Error::kNone) << l;
+      const int own_number = tt.name == "a" ? 1 : 2;  // the name field says which ship it really is
+      if (tt.status == arpa::TargetStatus::kLost) {
+        EXPECT_EQ(tt.number, 1);
+        EXPECT_TRUE(t >= 50.0 && t < 60.0) << t;
+        ++lost_a;
+      } else if (tt.name == "a" && t >= 50.0 && t < 60.0) {
+        ++tracked_a_in_loss;
+      } else if (t >= 70.0 && t < 80.0) {
+        (tt.number == 3 - own_number ? swapped : unswapped_in_swap)++;
+      } else {
+        EXPECT_EQ(tt.number, own_number) << "t " << t << ": " << l;
+        ++normal;
+      }
+    }
+    sim.step();
+  }
+  for (double t : a_reports)
+    EXPECT_FALSE(t >= 10.0 && t < 40.0) << "an AIS report of a at " << t << " s, inside the silence";
+  EXPECT_GE(std::count_if(a_reports.begin(), a_reports.end(), [](double t) { return t >= 40.0 && t < 42.0; }),
+            1)
+      << "the transponder reports as soon as the silence ends";
+  EXPECT_EQ(lost_a, 1);
+  EXPECT_EQ(tracked_a_in_loss, 0);
+  EXPECT_EQ(swapped, 8);  // 4 scans of 2.5 s, both ships
+  EXPECT_EQ(unswapped_in_swap, 0);
+  EXPECT_GT(normal, 50);
+  // Errors name the fault.
+  EXPECT_THROW(
+      parseScenario(
+          scenarioYaml("  - {name: a, position: {x_m: 3000, y_m: 0}, course_deg: 0, speed_kn: 1}\n") +
+          "sensor_faults: [{type: radar_swap, ship: a, start_s: 1, duration_s: 1}]\n"),
+      ScenarioError);
+  EXPECT_THROW(
+      parseScenario(
+          scenarioYaml("  - {name: a, position: {x_m: 3000, y_m: 0}, course_deg: 0, speed_kn: 1}\n") +
+          "sensor_faults: [{type: ais_silence, ship: nobody, start_s: 1, duration_s: 1}]\n"),
+      ScenarioError);
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "asv_core/clock_jump.h"
 #include "asv_core/tracker.h"
 
 namespace {
@@ -260,3 +261,33 @@ TEST(TrackerConfig, Validates) {
 }
 
 }  // namespace
+
+TEST(ClockJumpDetector, FiresOnlyWhenTimeGoesBackBeyondTheTolerance) {
+  asv::ClockJumpDetector c(1.0);
+  EXPECT_FALSE(c.jumpedBack(0.0));  // a ROS clock not yet received
+  EXPECT_FALSE(c.jumpedBack(100.0));
+  EXPECT_FALSE(c.jumpedBack(99.5));  // jitter of concurrent callbacks
+  EXPECT_FALSE(c.jumpedBack(101.0));
+  EXPECT_FALSE(c.jumpedBack(std::numeric_limits<double>::quiet_NaN()));
+  EXPECT_TRUE(c.jumpedBack(10.0));  // a bag loops: 91 s back
+  EXPECT_DOUBLE_EQ(c.lastJump(), 91.0);
+  EXPECT_EQ(c.jumps(), 1u);
+  EXPECT_FALSE(c.jumpedBack(11.0));  // time runs on from the new start
+  EXPECT_FALSE(c.jumpedBack(10.5));
+  EXPECT_EQ(c.jumps(), 1u);
+}
+
+TEST(Tracker, ClearDropsTheTracksButNotTheCountersOrIds) {
+  Tracker t;
+  ASSERT_EQ(t.update(ais(1, 100.0, 0, 0, 1, 0)), UpdateResult::kCreated);
+  ASSERT_EQ(t.update(ais(2, 100.0, 500, 0, 1, 0)), UpdateResult::kCreated);
+  const std::uint64_t first_id = t.tracks().back().id;
+  t.clear();
+  EXPECT_TRUE(t.tracks().empty());
+  EXPECT_TRUE(t.estimates(5.0).empty());
+  // After the jump the same ship makes a new track, with a new id, from its report at the new time.
+  ASSERT_EQ(t.update(ais(1, 5.0, 10, 0, 1, 0)), UpdateResult::kCreated);
+  EXPECT_GT(t.tracks().back().id, first_id);
+  EXPECT_NEAR(t.estimates(6.0).front().position.x(), 11.0, 1e-9);
+  EXPECT_EQ(t.counters().results[static_cast<std::size_t>(UpdateResult::kCreated)], 3u);
+}

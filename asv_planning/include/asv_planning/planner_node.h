@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include <asv_core/clock_jump.h>
 #include <asv_core/plan_follower.h>
 #include <asv_core/planning.h>
 #include <asv_msgs/RiskAssessment.h>
@@ -37,9 +38,11 @@ struct PlannerNodeParams {
   double replan_period = 30.0;                     // [s] replan at least this often
   double min_replan_interval = 2.0;                // [s] never replan faster than this
   double time_budget = 0.5;                        // [s] wall time a plugin may use per plan
-  double setpoint_rate = 1.0;                      // [Hz] set-points are re-sent this often
-  double waypoint_acceptance = 150.0;              // [m] next plan waypoint once within this radius
-  double fallback_speed_factor = 0.5;              // fallback: hold course at this fraction of the speed
+  double overrun_factor = 2.0;    // a plan that took longer than this x time_budget is discarded: fallback
+  double fault_plan_delay = 0.0;  // [s, wall] fault injection (tests): sleep this long in every plan
+  double setpoint_rate = 1.0;     // [Hz] set-points are re-sent this often
+  double waypoint_acceptance = 150.0;  // [m] next plan waypoint once within this radius
+  double fallback_speed_factor = 0.5;  // fallback: hold course at this fraction of the speed
   double extremis_range = 926.0;       // [m] fallback: hard starboard when an urgent target is this close
   double stale_after = 10.0;           // [s] risk/targets older than this are ignored
   double plan_clearance = 370.4;       // [m] replan when the rest of the plan would pass a target closer
@@ -66,6 +69,8 @@ private:
   void publishPlan();
   void publishSetpoint();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
+  // Drops the own ship, the inputs and the plan when the clock has gone backwards (a looping bag).
+  void checkClock();
 
   ros::NodeHandle nh_, pnh_;
   PlannerNodeParams params_;
@@ -82,6 +87,8 @@ private:
   asv_msgs::TargetArray::ConstPtr targets_;
   // Replanning policy and plan-to-set-point logic, shared with asv_batch (asv_core/plan_follower.h).
   std::unique_ptr<asv::PlanFollower> follower_;
+  asv::PlanFollowerConfig follower_config_;
+  asv::ClockJumpDetector clock_;
   ros::Time plan_stamp_;
   uint64_t overruns_ = 0;
   double last_compute_ = 0.0, max_compute_ = 0.0;

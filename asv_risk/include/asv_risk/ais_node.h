@@ -14,6 +14,7 @@
 #include <unordered_map>
 
 #include <asv_core/ais.h>
+#include <asv_core/clock_jump.h>
 #include <asv_core/geodesy.h>
 #include <asv_msgs/TargetArray.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -64,6 +65,8 @@ private:
   void reject(AisReject why, std::uint32_t mmsi);
   void mergeStatic(asv_msgs::Target& t) const;
   void publish();
+  // Forgets every ship and pending fragment when the clock has gone backwards (a looping bag).
+  void checkClock();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
 
   ros::NodeHandle nh_, pnh_;
@@ -77,6 +80,7 @@ private:
   ros::Publisher targets_pub_;
   ros::Timer publish_timer_, diag_timer_;
   diagnostic_updater::Updater updater_;
+  asv::ClockJumpDetector clock_;
   std::unique_ptr<NmeaInput> input_;  // last: its thread starts once everything else exists
 
   std::uint64_t rejected_[static_cast<std::size_t>(AisReject::kCount)] = {};
@@ -85,7 +89,7 @@ private:
   ros::WallTime last_sentence_;
   // For rates and "since the last report" in diagnostics.
   ros::WallTime diag_time_;
-  std::uint64_t diag_sentences_ = 0, diag_rejected_ = 0;
+  std::uint64_t diag_sentences_ = 0, diag_rejected_ = 0, diag_drops_ = 0;
 };
 
 }  // namespace asv_risk

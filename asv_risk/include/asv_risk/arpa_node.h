@@ -19,6 +19,7 @@
 #include <string>
 
 #include <asv_core/arpa.h>
+#include <asv_core/clock_jump.h>
 #include <asv_core/geodesy.h>
 #include <asv_msgs/TargetArray.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -86,6 +87,8 @@ private:
   void reject(ArpaReject why, int number);
   void parseError(asv::arpa::Error e, const char* type);
   void publish();
+  // Forgets every radar target and the own ship when the clock has gone backwards (a looping bag).
+  void checkClock();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
 
   ros::NodeHandle nh_, pnh_;
@@ -110,7 +113,8 @@ private:
   std::uint64_t parse_errors_[static_cast<std::size_t>(asv::arpa::Error::kCount)] = {};
   std::uint64_t ttm_ = 0, tll_ = 0, osd_ = 0, other_ = 0, lost_ = 0, published_ = 0;
   ros::WallTime last_sentence_, diag_time_;
-  std::uint64_t diag_sentences_ = 0, diag_rejected_ = 0;
+  std::uint64_t diag_sentences_ = 0, diag_rejected_ = 0, diag_drops_ = 0;
+  asv::ClockJumpDetector clock_;
   std::unique_ptr<NmeaInput> input_;  // last: its thread starts once everything else exists
 };
 

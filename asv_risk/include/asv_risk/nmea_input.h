@@ -87,14 +87,17 @@ private:
 };
 
 struct NmeaInputStats {
-  std::uint64_t lines = 0;        // lines handed to the node
-  std::uint64_t bytes = 0;        // bytes read from the device
-  std::uint64_t oversize = 0;     // lines longer than max_line_length, dropped
-  std::uint64_t queue_drops = 0;  // lines dropped because the queue was full
-  std::uint64_t connects = 0;     // successful opens/connections
-  std::uint64_t failures = 0;     // failed opens/connections and read errors
+  std::uint64_t lines = 0;         // lines handed to the node
+  std::uint64_t bytes = 0;         // bytes read from the device
+  std::uint64_t oversize = 0;      // lines longer than max_line_length, dropped
+  std::uint64_t queue_drops = 0;   // lines dropped because the queue was full
+  std::uint64_t kernel_drops = 0;  // udp: datagrams the kernel dropped (socket buffer full), SO_RXQ_OVFL
+  std::uint64_t connects = 0;      // successful opens/connections
+  std::uint64_t failures = 0;      // failed opens/connections and read errors
   bool connected = false;
   bool finished = false;  // file replay reached its end
+  // Every line or datagram lost before the node saw it.
+  std::uint64_t drops() const { return oversize + queue_drops + kernel_drops; }
 };
 
 class NmeaInput {

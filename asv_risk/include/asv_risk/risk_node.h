@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include <asv_core/clock_jump.h>
 #include <asv_core/risk_assessment.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
@@ -53,6 +54,8 @@ private:
   void odomCallback(const nav_msgs::Odometry::ConstPtr& msg);
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
   void reject(Reject why, const std::string& what);
+  // Forgets the own ship and every compliance history when the clock has gone backwards (a looping bag).
+  void checkClock();
   bool transformToWorking(const std::string& frame, const ros::Time& stamp, tf2::Transform& out);
   visualization_msgs::MarkerArray makeMarkers(const asv_msgs::RiskAssessment& ra) const;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
@@ -69,6 +72,7 @@ private:
   std::unique_ptr<diagnostic_updater::TopicDiagnostic> risk_diag_;
   ros::Timer diag_timer_;
 
+  asv::ClockJumpDetector clock_;
   std::optional<asv::ShipState> own_;
   ros::Time own_stamp_;
   std::array<uint64_t, static_cast<size_t>(Reject::kCount)> rejected_{};

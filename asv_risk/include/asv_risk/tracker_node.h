@@ -11,6 +11,7 @@
 #include <map>
 #include <string>
 
+#include <asv_core/clock_jump.h>
 #include <asv_core/tracker.h>
 #include <asv_msgs/TargetArray.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -47,6 +48,8 @@ private:
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
   void reject(TrackReject why, const std::string& id);
   void publish();
+  // Drops every track when the clock has gone backwards (a looping bag); true when it did.
+  bool checkClock(const ros::Time& now);
   asv_msgs::Target toMsg(const asv::TrackEstimate& e) const;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
 
@@ -61,6 +64,7 @@ private:
   ros::Timer publish_timer_, diag_timer_;
   diagnostic_updater::Updater updater_;
 
+  asv::ClockJumpDetector clock_;
   std::uint64_t rejected_[static_cast<std::size_t>(TrackReject::kCount)] = {};
   std::size_t alive_ = 0, coasting_ = 0, fused_ = 0;
   ros::WallTime diag_time_;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <asv_core/clock_jump.h>
 #include <asv_core/evaluation.h>
 #include <asv_core/scenario.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
@@ -55,6 +56,7 @@ private:
   EvaluatorNodeParams params_;
   std::unique_ptr<asv::Scenario> scenario_;
   std::unique_ptr<asv::RunRecorder> recorder_;
+  asv::ClockJumpDetector clock_;  // a replayed run that loops starts a new recording
   ros::Subscriber ships_sub_, events_sub_, plan_sub_, cmd_sub_;
   std::set<std::string> arrived_;
   std::vector<asv::SimEvent> pending_;  // events before the first sim/ships message

@@ -341,6 +341,8 @@ public:
 
   // Drops incomplete messages older than the timeout.
   void expire(double now);
+  // Drops every incomplete message, uncounted (the caller's clock went backwards).
+  void clearPending();
   std::size_t pendingCount() const;
   const Counters& counters() const { return counters_; }
   const DecoderConfig& config() const { return config_; }

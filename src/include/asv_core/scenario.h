@@ -41,6 +41,22 @@ struct ScenarioShip {
   std::vector<Eigen::Vector2d> waypoints;     // [m] ENU, for Behaviour::Waypoints
 };
 
+// A sensor fault the simulator's NMEA emitter plays (sim_node; asv_batch uses ground truth and ignores
+// them), for fault tests: scenario key sensor_faults.
+struct SensorFault {
+  enum class Type : uint8_t {
+    AisSilence,  // the ship's transponder sends nothing (position and static reports)
+    RadarLoss,   // the radar loses the ship: one TTM with status L, then none
+    RadarSwap,   // the radar swaps the target numbers of `ship` and `with` (two echoes passing close)
+  };
+  Type type = Type::AisSilence;
+  std::string ship, with;  // target names; `with` for RadarSwap only
+  double start = 0.0;      // [s] simulation time
+  double duration = 0.0;   // [s] > 0
+  bool active(double t) const { return t >= start && t < start + duration; }
+};
+const char* toString(SensorFault::Type t);
+
 struct Scenario {
   int format = 1;
   std::string name;
@@ -53,6 +69,7 @@ struct Scenario {
   ScenarioShip own;
   std::vector<ScenarioShip> targets;
   std::vector<StaticObstacle> obstacles;
+  std::vector<SensorFault> sensor_faults;
   ParamMap planner_params;  // flattened: nested maps become "a/b" keys
 
   LocalFrame frame() const { return LocalFrame(origin.lat_deg, origin.lon_deg); }

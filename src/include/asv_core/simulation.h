@@ -145,7 +145,9 @@ class NmeaEmitter {
 public:
   NmeaEmitter(const EmitterConfig& cfg, uint64_t seed);
   // Sentences due since the last call (at simulation time sim.time()), in emission order. The own
-  // ship (vessel 0) is the receiver and is never reported.
+  // ship (vessel 0) is the receiver and is never reported. The scenario's sensor_faults are played:
+  // an AIS silence sends nothing of the ship, a radar loss sends one TTM with status L and then none,
+  // a radar swap reports each of the two ships under the other's target number.
   void update(const Simulation& sim, std::vector<std::string>& ais, std::vector<std::string>& ttm);
   // ITU-R M.1371-5 Table 1 reporting interval [s] for a vessel.
   static double reportingInterval(char ais_class, double sog, double rate_of_turn, uint8_t nav_status = 0);
@@ -157,6 +159,7 @@ private:
   std::mt19937_64 rng_;
   std::vector<double> next_pos_, next_static_;
   double next_scan_ = 0.0;
+  std::vector<char> loss_announced_;  // per scenario sensor fault: the status-L TTM went out
   int seq_ = 0;
   bool channel_b_ = false;
   uint64_t ais_sent_ = 0, ttm_sent_ = 0;

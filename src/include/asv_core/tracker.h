@@ -147,6 +147,9 @@ public:
   // Every track dead-reckoned to `now` (straight line at the last velocity), in creation order.
   std::vector<TrackEstimate> estimates(double now) const;
   TrackEstimate estimate(const Track& t, double now) const;
+  // Drops every track (the clock went backwards: their times are in the future). Counters and track
+  // ids carry on, so an id is never reused.
+  void clear() { tracks_.clear(); }
 
   const std::vector<Track>& tracks() const { return tracks_; }
   const TrackerCounters& counters() const { return counters_; }
