@@ -1,4 +1,5 @@
 #include "asv_planning/planner_node.h"
+#include "asv_planning/param_tree.h"
 
 #include "asv_planning/odometry.h"
 
@@ -49,31 +50,6 @@ const std::set<std::string> kKnownParams = {"planner",
                                             "stand_on_policy",
                                             "risk_clear_time"};
 
-// Flattens a rosparam tree into "a/b" keys with text values.
-void flatten(const XmlRpc::XmlRpcValue& v, const std::string& prefix, asv::ParamMap& out) {
-  switch (v.getType()) {
-    case XmlRpc::XmlRpcValue::TypeStruct:
-      for (auto it = v.begin(); it != v.end(); ++it)
-        flatten(it->second, prefix.empty() ? it->first : prefix + "/" + it->first, out);
-      break;
-    case XmlRpc::XmlRpcValue::TypeBoolean:
-      out.set(prefix, static_cast<bool>(const_cast<XmlRpc::XmlRpcValue&>(v)) ? "true" : "false");
-      break;
-    case XmlRpc::XmlRpcValue::TypeInt:
-      out.set(prefix, std::to_string(static_cast<int>(const_cast<XmlRpc::XmlRpcValue&>(v))));
-      break;
-    case XmlRpc::XmlRpcValue::TypeDouble:
-      out.set(prefix, static_cast<double>(const_cast<XmlRpc::XmlRpcValue&>(v)));
-      break;
-    case XmlRpc::XmlRpcValue::TypeString:
-      out.set(prefix, static_cast<std::string>(const_cast<XmlRpc::XmlRpcValue&>(v)));
-      break;
-    default:
-      throw std::invalid_argument("parameter '" + prefix + "': lists are not planner parameters");
-  }
-}
-
-// Reads ~key into value when it is set; a value of the wrong type is an error, not the default.
 template <typename T>
 void get(const ros::NodeHandle& pnh, const std::string& key, T& value) {
   if (pnh.hasParam(key) && !pnh.getParam(key, value))
@@ -173,7 +149,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   }
   XmlRpc::XmlRpcValue tree;
   if (pnh.getParam(p.planner, tree))
-    flatten(tree, "", plugin_params);
+    flattenParams(tree, "", plugin_params, pnh.resolveName(p.planner) + "/");
   plugin_ = loader_.load(p.planner, plugin_params);
   if (DssaRosAgent::wanted(p.planner, pnh)) {  // distributed DSSA: the agent drives cmd, not the plugin
     dssa_ =

@@ -228,19 +228,8 @@ std::vector<asv::PlannerTarget> plannerTargets(const asv::Simulation& sim, size_
       others.push_back(vs[j].shipState());
   const std::vector<asv::TargetRisk> rs = risk.assessAll(own, others);
   std::vector<asv::PlannerTarget> out;
-  for (size_t k = 0; k < others.size(); ++k) {
-    asv::PlannerTarget t;
-    t.state = others[k];
-    const asv::TargetRisk& r = rs[k];
-    t.risk = r.compliance.risk;
-    t.compliant = r.compliance.compliant;
-    t.encounter = r.geometry.encounter;
-    t.role = r.geometry.role;
-    t.cri = r.cri.cri;
-    t.tcpa = r.cpa.tcpa;
-    t.dcpa = r.cpa.dcpa;
-    out.push_back(t);
-  }
+  for (size_t k = 0; k < others.size(); ++k)
+    out.push_back(asv::toPlannerTarget(others[k], rs[k]));
   return out;
 }
 

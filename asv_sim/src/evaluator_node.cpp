@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include <xmlrpcpp/XmlRpcValue.h>
+#include <asv_planning/param_tree.h>
 #include <filesystem>
 
 namespace asv_sim {
@@ -13,31 +13,6 @@ namespace {
 
 const std::set<std::string> kKnownParams = {"own_ship", "result",      "scenario",        "planner",
                                             "seed",     "time_origin", "shutdown_at_end", "pretty"};
-
-// Flattens the ~evaluation tree into "a/b" keys with text values.
-void flatten(const XmlRpc::XmlRpcValue& v, const std::string& prefix, asv::ParamMap& out) {
-  auto& m = const_cast<XmlRpc::XmlRpcValue&>(v);
-  switch (v.getType()) {
-    case XmlRpc::XmlRpcValue::TypeStruct:
-      for (auto it = m.begin(); it != m.end(); ++it)
-        flatten(it->second, prefix.empty() ? it->first : prefix + "/" + it->first, out);
-      break;
-    case XmlRpc::XmlRpcValue::TypeBoolean:
-      out.set(prefix, static_cast<bool>(m) ? "true" : "false");
-      break;
-    case XmlRpc::XmlRpcValue::TypeInt:
-      out.set(prefix, std::to_string(static_cast<int>(m)));
-      break;
-    case XmlRpc::XmlRpcValue::TypeDouble:
-      out.set(prefix, static_cast<double>(m));
-      break;
-    case XmlRpc::XmlRpcValue::TypeString:
-      out.set(prefix, static_cast<std::string>(m));
-      break;
-    default:
-      throw std::invalid_argument("evaluation/" + prefix + ": not a scalar");
-  }
-}
 
 asv::SimEvent::Type toCore(uint8_t type) {
   switch (type) {
@@ -68,7 +43,7 @@ EvaluatorNodeParams loadEvaluatorParams(const ros::NodeHandle& pnh) {
   asv::ParamMap eval;
   XmlRpc::XmlRpcValue tree;
   if (pnh.getParam("evaluation", tree))
-    flatten(tree, "", eval);
+    asv_planning::flattenParams(tree, "", eval, pnh.resolveName("evaluation") + "/");
   p.evaluation = asv::EvaluationConfig::fromParams(eval);  // rejects unknown keys, validates
   std::vector<std::string> names;
   if (ros::param::getParamNames(names)) {

@@ -41,6 +41,8 @@ const std::set<std::string> kKnownParams = {"scenario",
                                             "udp_port",
                                             "stop_on_collision",
                                             "shutdown_at_end",
+                                            "linger_for",
+                                            "linger_max",
                                             "start_delay",
                                             "dt",
                                             "collision_distance",
@@ -104,6 +106,8 @@ SimNodeParams loadParams(const ros::NodeHandle& pnh) {
   get(pnh, "udp_port", p.udp_port);
   get(pnh, "stop_on_collision", p.stop_on_collision);
   get(pnh, "shutdown_at_end", p.shutdown_at_end);
+  get(pnh, "linger_for", p.linger_for);
+  get(pnh, "linger_max", p.linger_max);
   get(pnh, "start_delay", p.start_delay);
   get(pnh, "max_sim_time", p.max_sim_time);
   get(pnh, "keep_up_topic", p.keep_up_topic);
@@ -312,8 +316,8 @@ void SimNode::publishState(bool odom, bool ships) {
       tp.y = s.y;
       if (trail.empty() || std::hypot(trail.back().x - s.x, trail.back().y - s.y) > 20.0)
         trail.push_back(tp);
-      if (trail.size() > 2000)
-        trail.erase(trail.begin(), trail.begin() + 1000);  // bounded memory
+      if (trail.size() > 600)
+        trail.erase(trail.begin(), trail.begin() + 300);  // bounded memory: the last 6-12 km
       if (trail.size() >= 2) {
         visualization_msgs::Marker tr;
         tr.header = arr.header;
@@ -457,9 +461,23 @@ int SimNode::run() {
            sim_->scenario().name.c_str(), sim_->time(), sim_->collided() ? "COLLISION" : "no collision",
            sim_->minSeparationOwn(), achieved_rtf_);
   if (params_.shutdown_at_end) {
-    // Let the last messages (END event, final state) reach the subscribers before leaving.
-    const ros::WallTime linger = ros::WallTime::now() + ros::WallDuration(1.0);
-    while (ros::ok() && ros::WallTime::now() < linger) {
+    // Let the last messages (END event, final state) reach the subscribers before leaving, and the node
+    // named by linger_for (the evaluator) finish its work and leave.
+    const ros::WallTime start = ros::WallTime::now();
+    const ros::WallTime linger = start + ros::WallDuration(1.0);
+    const ros::WallTime latest = start + ros::WallDuration(std::max(1.0, params_.linger_max));
+    auto waiting = [&]() {
+      const ros::WallTime now = ros::WallTime::now();
+      if (now < linger)
+        return true;
+      if (params_.linger_for.empty() || now >= latest)
+        return false;
+      std::vector<std::string> nodes;
+      if (!ros::master::getNodes(nodes))
+        return false;
+      return std::find(nodes.begin(), nodes.end(), params_.linger_for) != nodes.end();
+    };
+    while (ros::ok() && waiting()) {
       if (params_.publish_clock) {
         rosgraph_msgs::Clock c;
         c.clock = ros::Time(kEpoch + sim_->time());

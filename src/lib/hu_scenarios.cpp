@@ -34,14 +34,7 @@ void addTarget(PlanningProblem& p, const ShipState& s) {
 
 void assessTargets(PlanningProblem& problem, RiskAssessor& assessor) {
   for (PlannerTarget& t : problem.targets) {
-    const TargetRisk r = assessor.assess(problem.own, t.state);
-    t.risk = r.compliance.risk;
-    t.compliant = r.compliance.compliant;
-    t.encounter = r.geometry.encounter;
-    t.role = r.geometry.role;
-    t.cri = r.cri.cri;
-    t.tcpa = r.cpa.tcpa;
-    t.dcpa = r.cpa.dcpa;
+    t = toPlannerTarget(t.state, assessor.assess(problem.own, t.state));
     if (t.state.speed < 0.1) {
       t.encounter = Encounter::None;
       t.role = OwnRole::None;

@@ -36,4 +36,17 @@ std::vector<TargetRisk> RiskAssessor::assessAll(const ShipState& own, const std:
   return out;
 }
 
+PlannerTarget toPlannerTarget(const ShipState& target, const TargetRisk& r) {
+  PlannerTarget t;
+  t.state = target;
+  t.risk = r.compliance.risk;
+  t.compliant = r.compliance.compliant;
+  t.encounter = r.geometry.encounter;
+  t.role = r.geometry.role;
+  t.cri = r.cri.cri;
+  t.tcpa = r.cpa.tcpa;
+  t.dcpa = r.cpa.dcpa;
+  return t;
+}
+
 }  // namespace asv

@@ -35,8 +35,13 @@ struct SimNodeParams {
   int udp_port = 10110;
   bool stop_on_collision = false;
   bool shutdown_at_end = true;  // shut the node down when the scenario ends (launch: required="true")
-  double start_delay = 1.0;     // [s, wall] wait for subscribers before time starts
-  double max_sim_time = 0.0;    // [s] end the run here if earlier than the scenario end (0: no limit)
+  // Before shutting down, wait (publishing the final clock) until this node has left the master, at
+  // most linger_max seconds: the evaluator writes its result after the END event, and the launch ends
+  // when sim_node (required) does. Empty: wait 1 s only.
+  std::string linger_for;
+  double linger_max = 60.0;   // [s, wall]
+  double start_delay = 1.0;   // [s, wall] wait for subscribers before time starts
+  double max_sim_time = 0.0;  // [s] end the run here if earlier than the scenario end (0: no limit)
   // rate 0 runs "as fast as the subscribers keep up": the simulation never gets more than keep_up_lead
   // simulated seconds ahead of the last asv_msgs/RiskAssessment on keep_up_topic (the pipeline's
   // output), waiting at most keep_up_timeout wall seconds each time (then it goes on: a pipeline that

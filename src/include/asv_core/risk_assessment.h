@@ -8,6 +8,7 @@
 #include "asv_core/colregs.h"
 #include "asv_core/cpa.h"
 #include "asv_core/cri.h"
+#include "asv_core/planning.h"
 #include "asv_core/risk_level.h"
 
 namespace asv {
@@ -49,5 +50,9 @@ private:
   RiskConfig cfg_;
   ComplianceMonitor monitor_;
 };
+
+// A target as the planners see it: its state and its risk picture (level, compliance flag, encounter
+// and role, CRI, TCPA and DCPA).
+PlannerTarget toPlannerTarget(const ShipState& target, const TargetRisk& risk);
 
 }  // namespace asv
