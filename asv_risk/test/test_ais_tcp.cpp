@@ -59,7 +59,8 @@ public:
   ~Server() {
     if (client_ >= 0)
       ::close(client_);
-    ::close(fd_);
+    if (fd_ >= 0)
+      ::close(fd_);
   }
   bool ok() const { return ok_; }
   // Waits up to `timeout` seconds for the node to connect.
@@ -77,6 +78,11 @@ public:
   void dropClient() {
     ::close(client_);
     client_ = -1;
+  }
+  // Stops accepting: a reconnection attempt is then refused, not queued in the listen backlog.
+  void stopListening() {
+    ::close(fd_);
+    fd_ = -1;
   }
 
 private:
@@ -145,6 +151,7 @@ TEST_F(Tcp, ReconnectsAfterTheServerGoesAwayAndComesBack) {
     EXPECT_TRUE(waitFor([&] { return reports_.count(kA) > 0; }, 5.0))
         << "no target from the first connection";
     EXPECT_TRUE(waitFor([&] { return connects_ == 1; }, 3.0)) << "connects " << connects_;
+    s.stopListening();  // first, so that the node's immediate retry is refused
     s.dropClient();
   }  // the server is gone: connections are refused
   const auto gone = std::chrono::steady_clock::now();
