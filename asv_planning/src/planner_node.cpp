@@ -254,10 +254,12 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
   std::vector<asv::PlannerTarget> out;
   const ros::Time now = ros::Time::now();
   std::map<std::string, const asv_msgs::TargetRisk*> risk_by_id;
-  // A message stamped in the future (beyond clock jitter) is as unusable as an old one.
+  // A message stamped far in the future is as unusable as an old one. Not any stamp ahead of our clock:
+  // faster than real time, /clock reaches the nodes milliseconds apart, which is seconds of simulated
+  // time at 150x (a real jump back is handled by checkClock()).
   auto fresh = [&](const ros::Time& stamp) {
     const double age = (now - stamp).toSec();
-    return age < params_.stale_after && age > -1.0;
+    return age < params_.stale_after && age > -params_.stale_after;
   };
   if (risk_ && fresh(risk_->header.stamp))
     for (const auto& r : risk_->targets)
