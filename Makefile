@@ -15,7 +15,7 @@ CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES=""
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test bench demo clean format eval dssa-results soak test-asan fuzz-long
+.PHONY: help setup build test bench demo clean format eval eval-ros dssa-results soak test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
@@ -24,6 +24,7 @@ help:
 	@echo "  make build   build the catkin workspace (build/, devel/)"
 	@echo "  make bench   run the Google Benchmark executables, JSON into out/bench/"
 	@echo "  make eval    every scenario with every planner through asv_batch (out/eval/)"
+	@echo "  make eval-ros  the same pairs through the ROS pipeline in lockstep against asv_batch (out/eval_ros/)"
 	@echo "  make dssa-results  the DSSA paper's three experiments through asv_batch -> docs/results/dssa.md"
 	@echo "  make soak    2 simulated hours, 50 ships, the whole ROS pipeline: memory and rates (out/soak/)"
 	@echo "  make test-asan  build and run the asv_core unit tests under ASan+UBSan (build_asan/)"
@@ -89,6 +90,13 @@ format:
 SEEDS ?= 3
 eval: build
 	@$(DEVEL) && scripts/eval.sh $(SEEDS)
+
+# Batch and ROS agree (scripts/eval_ros.py): every scenario/planner pair once through scenario.launch
+# lockstep:=true and once through asv_batch; out/eval_ros/report.md, exit 1 on a disagreement.
+# EVAL_ROS_ARGS="--scenarios head_on --planners ga" narrows it.
+EVAL_ROS_ARGS ?=
+eval-ros: build
+	@$(DEVEL) && scripts/eval_ros.py $(EVAL_ROS_ARGS)
 
 # Hirayama et al. (2019) Sec. 5, Tables 1-3, through asv_batch: docs/results/dssa.md (scripts/dssa_results.py).
 dssa-results: build

@@ -2,9 +2,9 @@
 """Whole-pipeline rostest: each planner on each standard encounter of the scenario library.
 
 For every (encounter, planner) pair, scenario.launch runs the scenario through the real pipeline
-(sim_node -> NMEA -> ais_node/arpa_node -> tracker -> risk_node -> planner_node -> autopilot) at a
-real-time factor of ASV_ENCOUNTER_RATE (default 150; rate 0 outruns the ingestion and risk nodes, whose
-pictures then go stale) until 300 s after the unaltered CPA, and the evaluator's result JSON must show:
+(sim_node -> NMEA -> ais_node/arpa_node -> tracker -> risk_node -> planner_node -> autopilot) in
+lockstep (every node processes each simulation step before the next: the same decisions on every run
+and machine) until 300 s after the unaltered CPA, and the evaluator's result JSON must show:
   - no collision, and a minimum separation above the scenario's safety.min_separation_m;
   - role-correct behaviour (COLREGs), checked here from the manoeuvres independently of the score:
       give-way, head-on (Rule 14) and crossing (Rules 15, 16): the first alteration is to starboard;
@@ -36,7 +36,6 @@ from asv_msgs.msg import CourseSpeedSetpoint, Plan, RiskAssessment, SimEvent, Ta
 from nav_msgs.msg import Odometry
 
 PLANNERS = ["aco", "ga", "mopso", "dssa", "dssa_plus"]
-RATE = os.environ.get("ASV_ENCOUNTER_RATE", "150")
 # scenario -> (own role, [s] TCPA of the unaltered encounter at t = 0, from the scenario geometry:
 # range / closing speed, e.g. head-on 7 nm at 24 kn = 1050 s)
 ENCOUNTERS = {
@@ -103,7 +102,8 @@ def make_test(scenario, path, planner, role, tcpa):
         out = tempfile.mkdtemp(prefix="asv_enc_")
         result = os.path.join(out, "result.json")
         cmd = ["roslaunch", "asv_bringup", "scenario.launch", "scenario:=" + scenario, "planner:=" + planner,
-               "rate:=" + RATE, "max_sim_time:=%g" % (tcpa + 300.0), "start_delay:=1.0", "out:=" + out, "result:=" + result, "output:=log"]
+               "lockstep:=true", "max_sim_time:=%g" % (tcpa + 300.0), "out:=" + out, "result:=" + result,
+               "output:=log"]
         CHECKER.reset()
         proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300)
         log = proc.stdout.decode(errors="replace")

@@ -34,7 +34,7 @@ def run(scenario, planner, sim_time, risks):
     del risks[:]
     proc = subprocess.run(
         ["roslaunch", "asv_bringup", "scenario.launch", "scenario:=" + scenario, "planner:=" + planner,
-         "rate:=100", "max_sim_time:=%g" % sim_time, "start_delay:=1.0", "out:=" + out, "result:=" + result,
+         "lockstep:=true", "max_sim_time:=%g" % sim_time, "out:=" + out, "result:=" + result,
          "output:=log"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300)
     log = proc.stdout.decode(errors="replace")
     if proc.returncode != 0 or not os.path.exists(result):

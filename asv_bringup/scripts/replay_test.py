@@ -60,7 +60,7 @@ class RecordReplay(unittest.TestCase):
         out = tempfile.mkdtemp(prefix="asv_replay_")
         rec = subprocess.run(
             ["roslaunch", "asv_bringup", "scenario.launch", "scenario:=" + SCENARIO, "planner:=mopso",
-             "rate:=50", "max_sim_time:=%g" % SIM_TIME, "start_delay:=1.0", "record:=true", "out:=" + out,
+             "lockstep:=true", "max_sim_time:=%g" % SIM_TIME, "record:=true", "out:=" + out,
              "output:=log"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300)
         cls.record_log = rec.stdout.decode(errors="replace")
         cls.record_status = rec.returncode

@@ -61,7 +61,7 @@ class SensorFaults(unittest.TestCase):
         result = os.path.join(out, "result.json")
         proc = subprocess.run(
             ["roslaunch", "asv_bringup", "scenario.launch", "scenario:=sensor_faults", "scenario_file:=" + SCENARIO,
-             "planner:=mopso", "rate:=20", "start_delay:=1.0", "out:=" + out, "result:=" + result,
+             "planner:=mopso", "lockstep:=true", "out:=" + out, "result:=" + result,
              "output:=log"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300)
         for s in subs:
             s.unregister()

@@ -31,7 +31,7 @@ def make_test(name, path):
         out = tempfile.mkdtemp(prefix="asv_smoke_")
         result = os.path.join(out, "result.json")
         cmd = ["roslaunch", "asv_bringup", "scenario.launch", "scenario:=" + name, "scenario_file:=" + path,
-               "rate:=0", "max_sim_time:=%g" % SIM_TIME, "start_delay:=1.0", "out:=" + out,
+               "lockstep:=true", "max_sim_time:=%g" % SIM_TIME, "out:=" + out,
                "result:=" + result, "output:=log"]
         proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120)
         log = proc.stdout.decode(errors="replace")

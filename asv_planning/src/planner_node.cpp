@@ -31,6 +31,7 @@ const std::set<std::string> kKnownParams = {"planner",
                                             "replan_period",
                                             "min_replan_interval",
                                             "time_budget",
+                                            "lockstep_time_budget",
                                             "overrun_factor",
                                             "fault_plan_delay",
                                             "setpoint_rate",
@@ -69,6 +70,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   get(pnh, "replan_period", p.replan_period);
   get(pnh, "min_replan_interval", p.min_replan_interval);
   get(pnh, "time_budget", p.time_budget);
+  get(pnh, "lockstep_time_budget", p.lockstep_time_budget);
   get(pnh, "overrun_factor", p.overrun_factor);
   get(pnh, "fault_plan_delay", p.fault_plan_delay);
   get(pnh, "setpoint_rate", p.setpoint_rate);
@@ -91,10 +93,11 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
       throw std::invalid_argument("give both goal_x and goal_y (metres, map frame)");
     p.has_goal = true;
   }
-  if (!(p.replan_period > 0 && p.min_replan_interval >= 0 && p.time_budget > 0 && p.setpoint_rate > 0 &&
-        p.waypoint_acceptance > 0 && p.fallback_speed_factor >= 0 && p.fallback_speed_factor <= 1 &&
-        p.extremis_range >= 0 && p.stale_after > 0 && p.limits.max_speed > 0 && p.overrun_factor >= 1 &&
-        p.fault_plan_delay >= 0 && p.fault_plan_delay <= 60))
+  if (!(p.replan_period > 0 && p.min_replan_interval >= 0 && p.time_budget > 0 &&
+        p.lockstep_time_budget > 0 && p.setpoint_rate > 0 && p.waypoint_acceptance > 0 &&
+        p.fallback_speed_factor >= 0 && p.fallback_speed_factor <= 1 && p.extremis_range >= 0 &&
+        p.stale_after > 0 && p.limits.max_speed > 0 && p.overrun_factor >= 1 && p.fault_plan_delay >= 0 &&
+        p.fault_plan_delay <= 60))
     throw std::invalid_argument("planner_node: a parameter is out of range (see config/planner_node.yaml)");
 
   // Unknown private keys are typos, except the plugin's own subtree.
@@ -145,6 +148,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   }
   if (p.planner.empty() || p.planner == "none") {
     ROS_INFO("planner_node: no planner for ship '%s': it steers straight for its goal", p.ship.c_str());
+    lockstep_.start();  // nothing to do at any step, but the simulation waits for every participant
     return;
   }
   XmlRpc::XmlRpcValue tree;
@@ -156,6 +160,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
         std::make_unique<DssaRosAgent>(nh_, pnh_, DssaRosAgent::configOf(*plugin_),
                                        DssaRosOptions{p.ship, p.frame_id, p.has_goal, p.goal, p.cruise_speed,
                                                       p.limits.min_speed, p.limits.max_speed, p.seed});
+    lockstep_.start();  // the distributed agents keep their own timing (agents.launch, not lockstep)
     return;
   }
 
@@ -168,7 +173,9 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   fc.cruise_speed = p.cruise_speed;
   fc.replan_period = p.replan_period;
   fc.min_replan_interval = p.min_replan_interval;
-  fc.time_budget = p.time_budget;
+  // In lockstep a plan costs no simulated time: the budget only guards against a plugin that never
+  // returns, and plugins that stop at their budget give the same plan on any machine.
+  fc.time_budget = lockstep_.enabled() ? p.lockstep_time_budget : p.time_budget;
   fc.waypoint_acceptance = p.waypoint_acceptance;
   fc.fallback_speed_factor = p.fallback_speed_factor;
   fc.extremis_range = p.extremis_range;
@@ -185,15 +192,17 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
     follower_->setGoal(p.goal);
   follower_->setObstacles(obstacles_);
 
-  odom_sub_ = nh_.subscribe("odom", 10, &PlannerNode::odomCallback, this);
-  risk_sub_ = nh_.subscribe("risk", 10, &PlannerNode::riskCallback, this);
-  targets_sub_ = nh_.subscribe("targets", 10, &PlannerNode::targetsCallback, this);
+  // The inputs are read at the set-point job (lockstep: the step's odometry, risk and tracks first).
+  odom_sub_ = lockstep_.subscribe("odom", 10, &PlannerNode::odomCallback, this, false);
+  risk_sub_ = lockstep_.subscribe("risk", 10, &PlannerNode::riskCallback, this, false);
+  targets_sub_ = lockstep_.subscribe("targets", 10, &PlannerNode::targetsCallback, this, false);
   goal_sub_ = nh_.subscribe("goal", 1, &PlannerNode::goalCallback, this);
   plan_pub_ = nh_.advertise<asv_msgs::Plan>("plan", 5, true);
   path_pub_ = nh_.advertise<nav_msgs::Path>("path", 5, true);
   cmd_pub_ = nh_.advertise<asv_msgs::CourseSpeedSetpoint>("cmd", 5);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("plan_markers", 2, true);
-  timer_ = nh_.createTimer(ros::Duration(1.0 / p.setpoint_rate), &PlannerNode::timerCallback, this);
+  lockstep_.every(1.0 / p.setpoint_rate, [this] { timerCallback(); });
+  lockstep_.start();
   updater_.setHardwareID(p.ship);
   updater_.add("planner", this, &PlannerNode::diagnose);
   ROS_INFO("planner_node: ship '%s', planner '%s', goal %s, budget %.2f s", p.ship.c_str(), p.planner.c_str(),
@@ -208,6 +217,7 @@ void PlannerNode::checkClock() {
       "risk and plan dropped",
       clock_.lastJump());
   own_.reset();
+  first_input_ = -1.0;
   risk_.reset();
   targets_.reset();
   follower_ = std::make_unique<asv::PlanFollower>(follower_config_);
@@ -228,6 +238,8 @@ void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
   }
   follower_->updateOwn(*s);
   own_ = *s;
+  if (first_input_ < 0.0)
+    first_input_ = ros::Time::now().toSec();
 }
 
 void PlannerNode::riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg) {
@@ -266,11 +278,10 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
       risk_by_id[r.target_id] = &r;
   if (!targets_ || !fresh(targets_->header.stamp))
     return out;
-  // While the risk node is alive, a target it has not assessed yet (a new track, or the first second
-  // of a run) is left out: planned against without its encounter and role, the own ship could give
-  // way to a ship it should stand on for, or pass on the wrong side. Without a risk node (no recent
-  // RiskAssessment) every target is planned against, risk-blind.
-  const bool risk_alive = !risk_by_id.empty() || (risk_ && fresh(risk_->header.stamp));
+  // A target no assessment covers yet (a new track, or the start of a run) is left out; only once the
+  // risk picture has gone silent is every target planned against, risk-blind (asv::riskBlindPlanning).
+  const bool risk_alive = !asv::riskBlindPlanning(risk_ && fresh(risk_->header.stamp), now.toSec(),
+                                                  first_input_, params_.stale_after);
   for (const auto& t : targets_->targets) {
     if (t.id == params_.ship ||
         !asv::allFinite({t.position.x, t.position.y, t.course_over_ground, t.speed_over_ground}))
@@ -316,7 +327,7 @@ void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerT
     ros::WallDuration(params_.fault_plan_delay).sleep();  // fault injection: a plugin that overruns
   last_compute_ = (ros::WallTime::now() - start).toSec();
   max_compute_ = std::max(max_compute_, last_compute_);
-  if (last_compute_ > params_.overrun_factor * params_.time_budget) {
+  if (!lockstep_.enabled() && last_compute_ > params_.overrun_factor * params_.time_budget) {
     // Made for a picture now overrun_factor budgets old: not flown. The fallback keeps the ship safe
     // until the next plan comes in time (diagnostics WARN with this reason).
     ++overruns_;
@@ -380,7 +391,7 @@ void PlannerNode::publishPlan() {
   m.cost = std::isfinite(plan.cost) ? plan.cost : 0.0;
   m.compute_time = plan.compute_time;
   m.message = plan.message;
-  plan_pub_.publish(m);
+  lockstep_.publish(plan_pub_, m);
   path_pub_.publish(path);
   if (line.points.size() >= 2)
     markers.markers.push_back(line);
@@ -396,10 +407,10 @@ void PlannerNode::publishSetpoint() {
   sp.header.frame_id = params_.frame_id;
   sp.course = course;
   sp.speed = speed;
-  cmd_pub_.publish(sp);
+  lockstep_.publish(cmd_pub_, sp);
 }
 
-void PlannerNode::timerCallback(const ros::TimerEvent&) {
+void PlannerNode::timerCallback() {
   checkClock();
   if (!own_) {
     ROS_WARN_THROTTLE(10.0, "planner_node: waiting for odometry on %s", odom_sub_.getTopic().c_str());

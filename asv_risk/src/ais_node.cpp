@@ -100,14 +100,16 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
         return c;
       }()) {
   targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("ais/targets", 10);
-  publish_timer_ = nh_.createTimer(ros::Duration(1.0 / params_.publish_rate),
-                                   [this](const ros::TimerEvent&) { publish(); });
+  // Each array holds what was reported since the last: nothing new, nothing to publish.
+  lockstep_.every(
+      1.0 / params_.publish_rate, [this] { publish(); }, true);
   updater_.setHardwareID("ais");
   updater_.add("ais input", this, &AisNode::diagnose);
   diag_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
   last_sentence_ = diag_time_ = ros::WallTime::now();
   input_ = std::make_unique<NmeaInput>(
-      nh_, params_.input, [this](const std::string& l, const ros::Time& t) { handleLine(l, t); });
+      nh_, params_.input, [this](const std::string& l, const ros::Time& t) { handleLine(l, t); }, &lockstep_);
+  lockstep_.start();
   ROS_INFO("ais_node: input %s, origin %.6f %.6f, targets on %s in frame '%s'", input_->source().c_str(),
            params_.origin_lat_deg, params_.origin_lon_deg, targets_pub_.getTopic().c_str(),
            params_.frame_id.c_str());
@@ -297,7 +299,7 @@ void AisNode::publish() {
   }
   if (arr.targets.empty())
     return;
-  targets_pub_.publish(arr);
+  lockstep_.publish(targets_pub_, arr);
   ++published_;
 }
 

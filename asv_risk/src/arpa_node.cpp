@@ -96,15 +96,17 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
         return c;
       }()) {
   targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("arpa/targets", 10);
-  odom_sub_ = nh_.subscribe("odom", 20, &ArpaNode::odomCallback, this);
-  publish_timer_ = nh_.createTimer(ros::Duration(1.0 / params_.publish_rate),
-                                   [this](const ros::TimerEvent&) { publish(); });
+  odom_sub_ = lockstep_.subscribe("odom", 20, &ArpaNode::odomCallback, this, false);
+  // Each array holds what was reported since the last: nothing new, nothing to publish.
+  lockstep_.every(
+      1.0 / params_.publish_rate, [this] { publish(); }, true);
   updater_.setHardwareID("radar");
   updater_.add("arpa input", this, &ArpaNode::diagnose);
   diag_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
   last_sentence_ = diag_time_ = ros::WallTime::now();
   input_ = std::make_unique<NmeaInput>(
-      nh_, params_.input, [this](const std::string& l, const ros::Time& t) { handleLine(l, t); });
+      nh_, params_.input, [this](const std::string& l, const ros::Time& t) { handleLine(l, t); }, &lockstep_);
+  lockstep_.start();
   ROS_INFO("arpa_node: input %s, origin %.6f %.6f, own ship from %s, targets on %s", input_->source().c_str(),
            params_.origin_lat_deg, params_.origin_lon_deg, odom_sub_.getTopic().c_str(),
            targets_pub_.getTopic().c_str());
@@ -366,7 +368,7 @@ void ArpaNode::publish() {
   }
   if (arr.targets.empty())
     return;
-  targets_pub_.publish(arr);
+  lockstep_.publish(targets_pub_, arr);
   ++published_;
 }
 

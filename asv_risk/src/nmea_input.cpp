@@ -207,12 +207,14 @@ void LineFramer::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) con
 
 // ---- NmeaInput ----
 
-NmeaInput::NmeaInput(ros::NodeHandle nh, const NmeaInputParams& params, LineHandler handler)
+NmeaInput::NmeaInput(ros::NodeHandle nh, const NmeaInputParams& params, LineHandler handler,
+                     asv_ros::Lockstep* lockstep)
     : nh_(nh), params_(params), handler_(std::move(handler)) {
   params_.validate();
   const std::string& t = params_.type;
   if (t == "topic") {
-    topic_sub_ = nh_.subscribe("nmea_in", 1000, &NmeaInput::topicCallback, this);
+    topic_sub_ = lockstep ? lockstep->subscribe("nmea_in", 1000, &NmeaInput::topicCallback, this)
+                          : nh_.subscribe("nmea_in", 1000, &NmeaInput::topicCallback, this);
     source_ = "topic:" + topic_sub_.getTopic();
     return;
   }

@@ -131,8 +131,9 @@ RiskNode::RiskNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   risk_pub_ = nh_.advertise<asv_msgs::RiskAssessment>("risk", 10);
   if (params_.publish_markers)
     marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("risk_markers", 2);
-  odom_sub_ = nh_.subscribe("odom", 20, &RiskNode::odomCallback, this);
-  targets_sub_ = nh_.subscribe("targets", 20, &RiskNode::targetsCallback, this);
+  // Lockstep: the odometry of the step first, then the tracks it is assessed with.
+  odom_sub_ = lockstep_.subscribe("odom", 20, &RiskNode::odomCallback, this, false);
+  targets_sub_ = lockstep_.subscribe("targets", 20, &RiskNode::targetsCallback, this);
 
   updater_.setHardwareID(params_.own_ship);
   risk_diag_ = std::make_unique<diagnostic_updater::TopicDiagnostic>(
@@ -140,6 +141,7 @@ RiskNode::RiskNode(ros::NodeHandle nh, ros::NodeHandle pnh)
       diagnostic_updater::TimeStampStatusParam(-1.0, 5.0));
   updater_.add("inputs", this, &RiskNode::diagnose);
   diag_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
+  lockstep_.start();
   ROS_INFO("risk_node: own ship '%s', frame '%s', t_max %.0f s, d_min %.0f m, t_safe %.0f s, d_safe %.0f m",
            params_.own_ship.c_str(), params_.frame_id.c_str(), params_.risk.level.t_max_s,
            params_.risk.level.d_min_m, params_.risk.level.t_safe_s, params_.risk.level.d_safe_m);
@@ -277,7 +279,7 @@ void RiskNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
     ra.max_cri = std::max(ra.max_cri, risks[i].cri.cri);
     ra.max_risk_level = std::max(ra.max_risk_level, ra.targets.back().risk_level);
   }
-  risk_pub_.publish(ra);
+  lockstep_.publish(risk_pub_, ra);
   risk_diag_->tick(ra.header.stamp);
   ++assessments_;
   if (params_.publish_markers)

@@ -128,10 +128,10 @@ TrackReject targetToReport(const asv_msgs::Target& t, const ros::Time& array_sta
 TrackerNode::TrackerNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh), pnh_(pnh), params_(loadTrackerParams(pnh)), tracker_(params_.tracker) {
   targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("targets", 10);
-  ais_sub_ = nh_.subscribe("ais/targets", 50, &TrackerNode::targetsCallback, this);
-  arpa_sub_ = nh_.subscribe("arpa/targets", 50, &TrackerNode::targetsCallback, this);
-  publish_timer_ = nh_.createTimer(ros::Duration(1.0 / params_.publish_rate),
-                                   [this](const ros::TimerEvent&) { publish(); });
+  ais_sub_ = lockstep_.subscribe("ais/targets", 50, &TrackerNode::targetsCallback, this);
+  arpa_sub_ = lockstep_.subscribe("arpa/targets", 50, &TrackerNode::targetsCallback, this);
+  lockstep_.every(1.0 / params_.publish_rate, [this] { publish(); });
+  lockstep_.start();
   updater_.setHardwareID("tracker");
   updater_.add("tracks", this, &TrackerNode::diagnose);
   diag_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
@@ -270,7 +270,7 @@ void TrackerNode::publish() {
     it = mmsis.count(it->first) ? std::next(it) : ais_meta_.erase(it);
   for (auto it = arpa_meta_.begin(); it != arpa_meta_.end();)
     it = numbers.count(it->first) ? std::next(it) : arpa_meta_.erase(it);
-  targets_pub_.publish(arr);
+  lockstep_.publish(targets_pub_, arr);
 }
 
 void TrackerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {

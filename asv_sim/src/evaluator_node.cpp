@@ -65,10 +65,13 @@ EvaluatorNode::EvaluatorNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh), pnh_(pnh), params_(loadEvaluatorParams(pnh)) {
   if (!params_.scenario.empty())
     scenario_ = std::make_unique<asv::Scenario>(asv::loadScenario(params_.scenario));
-  ships_sub_ = nh_.subscribe("sim/ships", 20, &EvaluatorNode::shipsCallback, this);
-  events_sub_ = nh_.subscribe("sim/events", 100, &EvaluatorNode::eventCallback, this);
-  plan_sub_ = nh_.subscribe(params_.own_ship + "/plan", 20, &EvaluatorNode::planCallback, this);
-  cmd_sub_ = nh_.subscribe(params_.own_ship + "/cmd", 50, &EvaluatorNode::cmdCallback, this);
+  // Lockstep: samples, then plans and set-points, then events; only an event wakes the node (the END
+  // event writes the result), and everything before it is delivered first, in order.
+  ships_sub_ = lockstep_.subscribe("sim/ships", 20, &EvaluatorNode::shipsCallback, this, false);
+  plan_sub_ = lockstep_.subscribe(params_.own_ship + "/plan", 20, &EvaluatorNode::planCallback, this, false);
+  cmd_sub_ = lockstep_.subscribe(params_.own_ship + "/cmd", 50, &EvaluatorNode::cmdCallback, this, false);
+  events_sub_ = lockstep_.subscribe("sim/events", 100, &EvaluatorNode::eventCallback, this);
+  lockstep_.start();
   wall_start_ = ros::WallTime::now();
   ROS_INFO("evaluator_node: own ship '%s', result %s", params_.own_ship.c_str(),
            params_.result.empty() ? "(not written)" : params_.result.c_str());

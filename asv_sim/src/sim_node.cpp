@@ -9,12 +9,15 @@
 #include <cmath>
 #include <set>
 
+#include <asv_msgs/LockstepStep.h>
 #include <asv_msgs/NmeaSentence.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/SimEvent.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/lockstep.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <ros/callback_queue.h>
 #include <rosgraph_msgs/Clock.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -26,6 +29,7 @@ namespace {
 constexpr double kEpoch = 1.0e9;  // [s] ROS time of simulation time 0
 
 const std::set<std::string> kKnownParams = {"scenario",
+                                            "lockstep_participants",
                                             "seed",
                                             "max_sim_time",
                                             "keep_up_topic",
@@ -113,6 +117,9 @@ SimNodeParams loadParams(const ros::NodeHandle& pnh) {
   get(pnh, "keep_up_topic", p.keep_up_topic);
   get(pnh, "keep_up_lead", p.keep_up_lead);
   get(pnh, "keep_up_timeout", p.keep_up_timeout);
+  p.lockstep = asv_ros::lockstepEnabled();
+  p.lockstep_timeout = asv_ros::lockstepTimeout();
+  get(pnh, "lockstep_participants", p.lockstep_participants);
   if (!(p.keep_up_lead > 0.0) || !(p.keep_up_timeout > 0.0))
     throw std::invalid_argument("keep_up_lead and keep_up_timeout must be > 0 s");
   if (!(p.max_sim_time >= 0.0))
@@ -173,7 +180,8 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
       const std::string ship = v.name;
       cmd_subs_.push_back(nh_.subscribe<asv_msgs::CourseSpeedSetpoint>(
           ship + "/cmd", 10,
-          [this, ship](const asv_msgs::CourseSpeedSetpoint::ConstPtr& m) { cmdCallback(ship, m); }));
+          [this, ship](const asv_msgs::CourseSpeedSetpoint::ConstPtr& m) { cmdCallback(ship, m); },
+          ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay()));
     }
   }
   if (params_.emit_udp) {
@@ -188,11 +196,19 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
           if (std::isfinite(t))
             keep_up_time_ = std::max(keep_up_time_, t);
         });
+  if (params_.lockstep) {
+    for (int phase : {asv_ros::kIngestion, asv_ros::kTracking, asv_ros::kRisk, asv_ros::kPlanning})
+      stepPublisher(phase);
+    ack_sub_ = nh_.subscribe("/lockstep/ack", 1000, &SimNode::lockstepAckCallback, this,
+                             ros::TransportHints().tcpNoDelay());
+  }
   updater_.setHardwareID("asv_sim");
   updater_.add("simulation", this, &SimNode::diagnose);
-  ROS_INFO("sim_node: scenario '%s' (%zu ships, %.0f s), rate %s, seed %lu", sim_->scenario().name.c_str(),
+  ROS_INFO("sim_node: scenario '%s' (%zu ships, %.0f s), %s, seed %lu", sim_->scenario().name.c_str(),
            sim_->vessels().size(), sim_->scenario().duration,
-           params_.rate > 0 ? std::to_string(params_.rate).c_str() : "as fast as possible",
+           params_.lockstep   ? "lockstep"
+           : params_.rate > 0 ? ("rate " + std::to_string(params_.rate)).c_str()
+                              : "as fast as possible",
            static_cast<unsigned long>(params_.seed));
 }
 
@@ -202,6 +218,7 @@ SimNode::~SimNode() {
 }
 
 void SimNode::cmdCallback(const std::string& ship, const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg) {
+  ++cmds_received_[nh_.resolveName(ship + "/cmd")];
   if (sim_->setSetpoint(ship, msg->course, msg->speed)) {
     ++cmds_ok_;
   } else {
@@ -220,6 +237,7 @@ void SimNode::publishNmea(const std::vector<std::string>& lines, const ros::Time
       m.sentence = l;
       m.source = "sim";
       nmea_pub_.publish(m);
+      lockstep_.published(nmea_pub_.getTopic());
     }
     if (udp_fd_ >= 0) {
       sockaddr_in addr{};
@@ -260,6 +278,7 @@ void SimNode::publishState(bool odom, bool ships) {
       o.twist.twist.linear.y = -s.v;
       o.twist.twist.angular.z = -s.r;
       odom_pubs_[i].publish(o);
+      lockstep_.published(odom_pubs_[i].getTopic());
       geometry_msgs::TransformStamped t;
       t.header = o.header;
       t.child_frame_id = o.child_frame_id;
@@ -342,6 +361,7 @@ void SimNode::publishState(bool odom, bool ships) {
   }
   if (ships) {
     ships_pub_.publish(arr);
+    lockstep_.published(ships_pub_.getTopic());
     markers_pub_.publish(markers);
   }
 }
@@ -359,6 +379,7 @@ void SimNode::publishEvents(size_t from) {
     m.ship_b = ev[i].b;
     m.distance = ev[i].distance;
     events_pub_.publish(m);
+    lockstep_.published(events_pub_.getTopic());
     if (ev[i].type == asv::SimEvent::Collision)
       ROS_ERROR("sim_node: COLLISION between %s and %s at t = %.1f s", ev[i].a.c_str(), ev[i].b.c_str(),
                 ev[i].time);
@@ -373,60 +394,86 @@ void SimNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("real-time factor achieved", achieved_rtf_);
   stat.add("real-time factor requested", params_.rate);
   stat.add("keep-up waits timed out", keep_up_timeouts_);
+  stat.add("lockstep", params_.lockstep);
+  if (params_.lockstep) {
+    stat.add("lockstep participants", lockstep_.participants());
+    stat.add("lockstep rounds", lockstep_rounds_);
+    stat.add("lockstep waits timed out", lockstep_timeouts_);
+  }
   stat.add("set-points accepted", cmds_ok_);
   stat.add("set-points rejected", cmds_rejected_);
   stat.add("NMEA sentences sent", nmea_sent_);
   stat.add("min separation own [m]", sim_->minSeparationOwn());
   if (sim_->collided())
     stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "collision");
-  else if (params_.rate > 0.0 && achieved_rtf_ < 0.8 * params_.rate)
+  else if (lockstep_timeouts_ > 0)
+    stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "a lockstep participant did not answer in time");
+  else if (!params_.lockstep && params_.rate > 0.0 && achieved_rtf_ < 0.8 * params_.rate)
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "slower than the requested real-time factor");
   else
     stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
 }
 
+void SimNode::publishClock() {
+  if (!params_.publish_clock)
+    return;
+  rosgraph_msgs::Clock c;
+  c.clock = ros::Time(kEpoch + sim_->time());
+  clock_pub_.publish(c);
+}
+
 int SimNode::run() {
+  return params_.lockstep ? runLockstep() : runFreely();
+}
+
+bool SimNode::runOver() const {
+  return sim_->finished() || (params_.max_sim_time > 0.0 && sim_->time() >= params_.max_sim_time);
+}
+
+int SimNode::everySteps(double rate) const {
+  return std::max(1, static_cast<int>(std::lround(1.0 / (rate * params_.sim.dt))));
+}
+
+SimNode::Sentences SimNode::emitSensors() {
+  Sentences s;
+  emitter_->update(*sim_, s.ais, s.ttm);
+  return s;
+}
+
+void SimNode::publishSensors(const Sentences& s) {
+  const ros::Time stamp(kEpoch + sim_->time());
+  publishNmea(s.ais, stamp, "ais");
+  publishNmea(s.ttm, stamp, "radar");
+}
+
+bool SimNode::publishNewEvents() {
+  if (sim_->events().size() <= events_done_)
+    return false;
+  publishEvents(events_done_);
+  events_done_ = sim_->events().size();
+  return params_.stop_on_collision && sim_->collided();
+}
+
+int SimNode::runFreely() {
   const ros::WallTime wait_until = ros::WallTime::now() + ros::WallDuration(params_.start_delay);
   while (ros::ok() && ros::WallTime::now() < wait_until) {
-    if (params_.publish_clock) {
-      rosgraph_msgs::Clock c;
-      c.clock = ros::Time(kEpoch);
-      clock_pub_.publish(c);
-    }
+    publishClock();
     publishState(true, true);
     ros::spinOnce();
     ros::WallDuration(0.05).sleep();
   }
-  const double dt = params_.sim.dt;
-  const int odom_every = std::max(1, static_cast<int>(std::lround(1.0 / (params_.odom_rate * dt))));
-  const int ships_every = std::max(1, static_cast<int>(std::lround(1.0 / (params_.ships_rate * dt))));
+  const int odom_every = everySteps(params_.odom_rate), ships_every = everySteps(params_.ships_rate);
   const ros::WallTime wall_start = ros::WallTime::now();
   ros::WallTime last_diag = wall_start;
-  size_t events_done = 0;
   long k = 0;
-  std::vector<std::string> ais, ttm;
-  while (ros::ok() && !sim_->finished() &&
-         !(params_.max_sim_time > 0.0 && sim_->time() >= params_.max_sim_time)) {
-    ais.clear();
-    ttm.clear();
-    emitter_->update(*sim_, ais, ttm);
-    const ros::Time stamp(kEpoch + sim_->time());
-    publishNmea(ais, stamp, "ais");
-    publishNmea(ttm, stamp, "radar");
+  while (ros::ok() && !runOver()) {
+    publishSensors(emitSensors());
     sim_->step();
     ++k;
-    if (params_.publish_clock) {
-      rosgraph_msgs::Clock c;
-      c.clock = ros::Time(kEpoch + sim_->time());
-      clock_pub_.publish(c);
-    }
+    publishClock();
     publishState(k % odom_every == 0, k % ships_every == 0);
-    if (sim_->events().size() > events_done) {
-      publishEvents(events_done);
-      events_done = sim_->events().size();
-      if (params_.stop_on_collision && sim_->collided())
-        break;
-    }
+    if (publishNewEvents())
+      break;
     ros::spinOnce();
     const double wall = (ros::WallTime::now() - wall_start).toSec();
     achieved_rtf_ = wall > 0.0 ? sim_->time() / wall : 0.0;
@@ -451,15 +498,210 @@ int SimNode::run() {
       last_diag = ros::WallTime::now();
     }
   }
+  return finishRun();
+}
+
+// ---- lockstep ----
+
+bool SimNode::waitFor(const std::function<bool()>& done, const char* what) {
+  const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(params_.lockstep_timeout);
+  while (ros::ok() && !done()) {
+    if (ros::WallTime::now() > give_up) {
+      ++lockstep_timeouts_;
+      ROS_ERROR(
+          "sim_node: lockstep at t = %.1f s: still waiting for %s after %.0f s; the run goes on without",
+          sim_->time(), what, params_.lockstep_timeout);
+      return false;
+    }
+    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));
+  }
+  return true;
+}
+
+ros::Publisher& SimNode::stepPublisher(int phase) {
+  auto it = step_pubs_.find(phase);
+  if (it == step_pubs_.end())
+    it = step_pubs_
+             .emplace(phase, nh_.advertise<asv_msgs::LockstepStep>(asv_ros::lockstepStepTopic(phase), 100))
+             .first;
+  return it->second;
+}
+
+void SimNode::lockstepAckCallback(const asv_msgs::LockstepAck::ConstPtr& msg) {
+  if (msg->hello) {
+    std::vector<asv::LockstepInput> inputs;
+    for (size_t i = 0; i < msg->inputs.size(); ++i)
+      inputs.push_back({msg->inputs[i], i < msg->triggers.size() && msg->triggers[i]});
+    if (!lockstep_.admitted(msg->node) && lockstep_.pendingAdmissions().size() < lockstep_.participants())
+      ROS_INFO_ONCE("sim_node: lockstep participants are asking to join");
+    stepPublisher(msg->phase);  // a participant of a phase the stack does not know: it asks again
+    lockstep_.hello(msg->node, msg->phase, inputs);
+    last_hello_[msg->node] = ros::WallTime::now();
+    return;
+  }
+  if (msg->step != lockstep_round_step_ || !lockstep_waiting_.count(msg->node))
+    return;  // a late answer to a round that timed out
+  if (lockstep_round_phase_ == 0) {
+    lockstep_.admit(msg->node);
+  } else {
+    std::map<std::string, uint64_t> outputs;
+    for (size_t i = 0; i < msg->topics.size() && i < msg->counts.size(); ++i)
+      outputs[msg->topics[i]] = msg->counts[i];
+    lockstep_.acked(msg->node, outputs, static_cast<int64_t>(msg->next_due.toNSec()));
+  }
+  lockstep_waiting_.erase(msg->node);
+}
+
+bool SimNode::lockstepRound(uint64_t step, int phase, const std::vector<std::string>& run, bool wait) {
+  if (clock_step_ != step) {  // the participants act at the step's time
+    publishClock();
+    clock_step_ = step;
+  }
+  asv_msgs::LockstepStep m;
+  m.header.stamp = ros::Time(kEpoch + sim_->time());
+  m.step = step;
+  m.phase = static_cast<uint8_t>(phase);
+  if (phase > 0)
+    lockstep_.started(run);
+  for (const auto& [topic, n] : lockstep_.totals()) {
+    m.topics.push_back(topic);
+    m.counts.push_back(n);
+  }
+  lockstep_round_step_ = step;
+  lockstep_round_phase_ = phase;
+  lockstep_waiting_ = std::set<std::string>(run.begin(), run.end());
+  // Each participant hears its step on its own phase's topic (admissions included).
+  std::map<int, std::vector<std::string>> by_phase;
+  for (const auto& n : run)
+    by_phase[lockstep_.phaseOf(n)].push_back(n);
+  for (auto& [p, names] : by_phase) {
+    m.run = names;
+    stepPublisher(p).publish(m);
+  }
+  ++lockstep_rounds_;
+  if (!wait)
+    return true;
+  const std::string what = "phase " + std::to_string(phase) + " of step " + std::to_string(step);
+  return waitFor([this] { return lockstep_waiting_.empty(); }, what.c_str());
+}
+
+void SimNode::lockstepAdmit(uint64_t step) {
+  const std::vector<std::string> newcomers = lockstep_.pendingAdmissions();
+  if (newcomers.empty())
+    return;
+  for (const auto& n : newcomers)
+    ROS_INFO("sim_node: lockstep participant %s joins at t = %.1f s", n.c_str(), sim_->time());
+  lockstepRound(step, 0, newcomers, true);
+}
+
+void SimNode::lockstepPhases(uint64_t step, bool wait) {
+  const int64_t t_ns = static_cast<int64_t>(ros::Time(kEpoch + sim_->time()).toNSec());
+  for (int phase : lockstep_.phases()) {
+    const std::vector<std::string> run = lockstep_.runners(phase, t_ns);
+    if (!run.empty())
+      lockstepRound(step, phase, run, wait);
+  }
+}
+
+void SimNode::lockstepWaitForCmds() {
+  // The set-points the planners published in this step are applied before the simulation moves on.
+  waitFor(
+      [this] {
+        for (const auto& s : cmd_subs_)
+          if (cmds_received_[s.getTopic()] < lockstep_.total(s.getTopic()))
+            return false;
+        return true;
+      },
+      "the planners' set-points");
+}
+
+void SimNode::lockstepStart() {
+  std::vector<std::string> expected;
+  for (const auto& n : params_.lockstep_participants)
+    expected.push_back(ros::names::resolve(nh_.getNamespace(), n));
+  ROS_INFO("sim_node: lockstep: waiting for %zu participants", expected.size());
+  // A participant repeats its hello (every 0.2 s) while its inputs are connected to every publisher:
+  // the first step waits until everyone has asked, then 0.5 s more with every hello still fresh, so
+  // that no message of the run is lost to a node still connecting.
+  ros::WallTime all_seen;
+  waitFor(
+      [&] {
+        publishClock();
+        const ros::WallTime now = ros::WallTime::now();
+        for (const auto& n : expected)
+          if (!last_hello_.count(n)) {
+            all_seen = ros::WallTime();
+            return false;
+          }
+        if (all_seen.isZero())
+          all_seen = now;
+        for (const auto& [n, t] : last_hello_)
+          if ((now - t).toSec() > 0.5)
+            return false;
+        return (now - all_seen).toSec() > 0.5;
+      },
+      "the lockstep participants to start");
+}
+
+int SimNode::runLockstep() {
+  lockstepStart();
+  const int odom_every = everySteps(params_.odom_rate), ships_every = everySteps(params_.ships_rate);
+  const int clock_every = everySteps(1.0);
+  const ros::WallTime wall_start = ros::WallTime::now();
+  ros::WallTime last_diag = wall_start;
+  uint64_t k = 0;
+  while (ros::ok() && !runOver()) {
+    ++k;
+    // Step k: the state and the sensors at t_k, then every stage's work, then the dynamics. /clock goes
+    // out first at a step with work (so that it reaches the nodes before their step does), and at
+    // least every simulated second for the nodes' diagnostics timers, rviz and rosbag; most steps have
+    // no work. (lockstepRound sends it too, should this guess have missed a round.)
+    const Sentences sentences = emitSensors();
+    const int64_t t_ns = static_cast<int64_t>(ros::Time(kEpoch + sim_->time()).toNSec());
+    if ((k - 1) % clock_every == 0 || !sentences.ais.empty() || !sentences.ttm.empty() ||
+        lockstep_.anyRunner(t_ns)) {
+      publishClock();
+      clock_step_ = k;
+    }
+    lockstepAdmit(k);
+    publishState((k - 1) % odom_every == 0, (k - 1) % ships_every == 0);
+    publishSensors(sentences);
+    lockstepPhases(k, true);
+    lockstepWaitForCmds();
+    sim_->step();
+    if (publishNewEvents())
+      break;
+    const double wall = (ros::WallTime::now() - wall_start).toSec();
+    achieved_rtf_ = wall > 0.0 ? sim_->time() / wall : 0.0;
+    if ((ros::WallTime::now() - last_diag).toSec() >= 1.0) {
+      updater_.force_update();
+      last_diag = ros::WallTime::now();
+    }
+  }
+  // The final state and the events of the last step reach the evaluator in a last step.
+  publishClock();
+  publishState(true, true);
+  lockstepPhases(++k, true);
+  ROS_INFO("sim_node: lockstep: %lu steps, %lu rounds, %lu timeouts", static_cast<unsigned long>(k),
+           static_cast<unsigned long>(lockstep_rounds_), static_cast<unsigned long>(lockstep_timeouts_));
+  return finishRun();
+}
+
+int SimNode::finishRun() {
   asv_msgs::SimEvent end;
   end.header.stamp = ros::Time(kEpoch + sim_->time());
   end.header.frame_id = "map";
   end.type = asv_msgs::SimEvent::END;
   end.distance = sim_->minSeparationOwn();
   events_pub_.publish(end);
+  lockstep_.published(events_pub_.getTopic());
   ROS_INFO("sim_node: scenario '%s' ended at t = %.1f s: %s, min separation %.0f m, real-time factor %.1f",
            sim_->scenario().name.c_str(), sim_->time(), sim_->collided() ? "COLLISION" : "no collision",
            sim_->minSeparationOwn(), achieved_rtf_);
+  // The evaluator takes the END event in one more step; it writes its result and leaves (below) without
+  // answering.
+  if (params_.lockstep)
+    lockstepPhases(lockstep_round_step_ + 1, false);
   if (params_.shutdown_at_end) {
     // Let the last messages (END event, final state) reach the subscribers before leaving, and the node
     // named by linger_for (the evaluator) finish its work and leave.
@@ -478,11 +720,7 @@ int SimNode::run() {
       return std::find(nodes.begin(), nodes.end(), params_.linger_for) != nodes.end();
     };
     while (ros::ok() && waiting()) {
-      if (params_.publish_clock) {
-        rosgraph_msgs::Clock c;
-        c.clock = ros::Time(kEpoch + sim_->time());
-        clock_pub_.publish(c);
-      }
+      publishClock();
       ros::spinOnce();
       ros::WallDuration(0.05).sleep();
     }

@@ -38,6 +38,10 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   return c;
 }
 
+bool riskBlindPlanning(bool risk_fresh, double now, double first_input, double stale_after) {
+  return !risk_fresh && first_input >= 0.0 && now - first_input >= stale_after;
+}
+
 bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {
   if (plan.status != PlanStatus::Ok || !std::isfinite(plan.course_setpoint))
     return false;

@@ -171,3 +171,16 @@ TEST(PlanObservingGiveWay, RetriesAPortPlanWhenGivingWay) {
   EXPECT_EQ(calls, 4);
   EXPECT_NE(p.message.find("port alteration kept"), std::string::npos);
 }
+
+// Issue: at start-up the tracks reached planner_node a moment before their first risk assessment, the
+// first plan (t = 1 s) was made risk-blind, and in a being-overtaken encounter (own ship stand-on) ACO
+// and GA turned 12-16 deg. The planner must leave unassessed targets out until the risk picture has had
+// stale_after (10 s) to arrive; risk-blind planning is only for a picture that has gone silent.
+TEST(PlanFollower, NoRiskBlindPlanningBeforeTheFirstAssessmentHadTimeToArrive) {
+  const double stale_after = 10.0, start = 1000.0;
+  EXPECT_FALSE(asv::riskBlindPlanning(false, start + 1.0, start, stale_after));  // the t = 1 s case
+  EXPECT_FALSE(asv::riskBlindPlanning(false, start + 9.99, start, stale_after));
+  EXPECT_TRUE(asv::riskBlindPlanning(false, start + 10.0, start, stale_after));   // silent 10 s: degraded
+  EXPECT_FALSE(asv::riskBlindPlanning(true, start + 500.0, start, stale_after));  // a fresh picture
+  EXPECT_FALSE(asv::riskBlindPlanning(false, start + 500.0, -1.0, stale_after));  // no input at all yet
+}

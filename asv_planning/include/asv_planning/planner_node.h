@@ -17,6 +17,7 @@
 #include <asv_core/planning.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -38,6 +39,7 @@ struct PlannerNodeParams {
   double replan_period = 30.0;                     // [s] replan at least this often
   double min_replan_interval = 2.0;                // [s] never replan faster than this
   double time_budget = 0.5;                        // [s] wall time a plugin may use per plan
+  double lockstep_time_budget = 10.0;  // [s] the same in lockstep (the simulation waits for the plan)
   double overrun_factor = 2.0;    // a plan that took longer than this x time_budget is discarded: fallback
   double fault_plan_delay = 0.0;  // [s, wall] fault injection (tests): sleep this long in every plan
   double setpoint_rate = 1.0;     // [Hz] set-points are re-sent this often
@@ -63,7 +65,7 @@ private:
   void riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg);
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
   void goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg);
-  void timerCallback(const ros::TimerEvent&);
+  void timerCallback();
   std::vector<asv::PlannerTarget> targetsNow() const;
   void replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets);
   void publishPlan();
@@ -79,10 +81,11 @@ private:
   std::vector<asv::StaticObstacle> obstacles_;
   ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_;
   ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_;
-  ros::Timer timer_;
   diagnostic_updater::Updater updater_;
+  asv_ros::Lockstep lockstep_{nh_, asv_ros::kPlanning};
 
   std::optional<asv::ShipState> own_;
+  double first_input_ = -1.0;  // [s] ROS time of the first odometry (-1: none yet)
   asv_msgs::RiskAssessment::ConstPtr risk_;
   asv_msgs::TargetArray::ConstPtr targets_;
   // Replanning policy and plan-to-set-point logic, shared with asv_batch (asv_core/plan_follower.h).

@@ -17,6 +17,7 @@
 #include <asv_core/clock_jump.h>
 #include <asv_core/geodesy.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 
@@ -78,7 +79,8 @@ private:
   asv::ais::StaticStore store_;
   std::unordered_map<std::uint32_t, Ship> ships_;
   ros::Publisher targets_pub_;
-  ros::Timer publish_timer_, diag_timer_;
+  ros::Timer diag_timer_;
+  asv_ros::Lockstep lockstep_{nh_, asv_ros::kIngestion};  // before input_, which subscribes through it
   diagnostic_updater::Updater updater_;
   asv::ClockJumpDetector clock_;
   std::unique_ptr<NmeaInput> input_;  // last: its thread starts once everything else exists

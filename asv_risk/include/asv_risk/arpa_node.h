@@ -22,6 +22,7 @@
 #include <asv_core/clock_jump.h>
 #include <asv_core/geodesy.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -98,7 +99,8 @@ private:
   std::map<int, Radar> radars_;
   ros::Subscriber odom_sub_;
   ros::Publisher targets_pub_;
-  ros::Timer publish_timer_, diag_timer_;
+  ros::Timer diag_timer_;
+  asv_ros::Lockstep lockstep_{nh_, asv_ros::kIngestion};  // before input_, which subscribes through it
   diagnostic_updater::Updater updater_;
 
   bool has_odom_ = false;

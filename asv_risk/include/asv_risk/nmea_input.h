@@ -21,6 +21,8 @@
 #include <string_view>
 #include <thread>
 
+#include <asv_ros/lockstep.h>
+
 #include <asv_core/nmea.h>
 #include <asv_msgs/NmeaSentence.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -106,7 +108,10 @@ public:
   using LineHandler = std::function<void(const std::string& line, const ros::Time& stamp)>;
 
   // Opens the input (device inputs start their reader thread). Topics are resolved in `nh`.
-  NmeaInput(ros::NodeHandle nh, const NmeaInputParams& params, LineHandler handler);
+  // lockstep: for type topic, the sentences reach the handler at the node's lockstep steps (the node's
+  // own Lockstep, which must outlive this input); nullptr: at receipt.
+  NmeaInput(ros::NodeHandle nh, const NmeaInputParams& params, LineHandler handler,
+            asv_ros::Lockstep* lockstep = nullptr);
   ~NmeaInput();
   NmeaInput(const NmeaInput&) = delete;
   NmeaInput& operator=(const NmeaInput&) = delete;

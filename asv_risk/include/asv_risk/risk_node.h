@@ -14,6 +14,7 @@
 #include <asv_core/risk_assessment.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <diagnostic_updater/publisher.h>
 #include <nav_msgs/Odometry.h>
@@ -71,6 +72,7 @@ private:
   double diag_min_rate_, diag_max_rate_;
   std::unique_ptr<diagnostic_updater::TopicDiagnostic> risk_diag_;
   ros::Timer diag_timer_;
+  asv_ros::Lockstep lockstep_{nh_, asv_ros::kRisk};
 
   asv::ClockJumpDetector clock_;
   std::optional<asv::ShipState> own_;

@@ -14,6 +14,7 @@
 #include <asv_core/clock_jump.h>
 #include <asv_core/tracker.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 
@@ -61,7 +62,8 @@ private:
   std::map<int, asv_msgs::Target> arpa_meta_;
   ros::Subscriber ais_sub_, arpa_sub_;
   ros::Publisher targets_pub_;
-  ros::Timer publish_timer_, diag_timer_;
+  ros::Timer diag_timer_;
+  asv_ros::Lockstep lockstep_{nh_, asv_ros::kTracking};
   diagnostic_updater::Updater updater_;
 
   asv::ClockJumpDetector clock_;

@@ -20,6 +20,7 @@
 #include <asv_msgs/Plan.h>
 #include <asv_msgs/SimEvent.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/lockstep.h>
 #include <ros/ros.h>
 
 namespace asv_sim {
@@ -58,6 +59,7 @@ private:
   std::unique_ptr<asv::RunRecorder> recorder_;
   asv::ClockJumpDetector clock_;  // a replayed run that loops starts a new recording
   ros::Subscriber ships_sub_, events_sub_, plan_sub_, cmd_sub_;
+  asv_ros::Lockstep lockstep_{nh_, asv_ros::kEvaluation};
   std::set<std::string> arrived_;
   std::vector<asv::SimEvent> pending_;  // events before the first sim/ships message
   std::string planner_seen_;

@@ -8,13 +8,17 @@
 // Parameters: config/sim_node.yaml (every key documented there).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
+#include <asv_core/lockstep.h>
 #include <asv_core/simulation.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
+#include <asv_msgs/LockstepAck.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/Point.h>
 #include <ros/ros.h>
@@ -49,6 +53,11 @@ struct SimNodeParams {
   std::string keep_up_topic = "/risk";
   double keep_up_lead = 2.0;     // [s, sim]
   double keep_up_timeout = 1.0;  // [s, wall]
+  // Lockstep (global parameter /lockstep): the simulation advances a step only when every participant
+  // has done that step's work (asv_core/lockstep.h); rate, start_delay and keep_up_* do not apply.
+  bool lockstep = false;
+  double lockstep_timeout = 30.0;                  // [s, wall] global /lockstep_timeout
+  std::vector<std::string> lockstep_participants;  // node names the first step waits for
   asv::SimConfig sim;
   asv::EmitterConfig emitter;
 };
@@ -63,6 +72,28 @@ public:
   int run();
 
 private:
+  int runFreely();
+  int runLockstep();
+  bool runOver() const;               // the scenario's end or max_sim_time
+  int everySteps(double rate) const;  // [steps] between two publications at `rate` Hz of sim time
+  struct Sentences {
+    std::vector<std::string> ais, ttm;
+  };
+  Sentences emitSensors();  // the NMEA the own ship's receivers get at this time
+  void publishSensors(const Sentences& s);
+  bool publishNewEvents();  // true: the run must stop (stop_on_collision)
+  void lockstepStart();
+  // The END event, then (shutdown_at_end) linger until the evaluator has written its result.
+  int finishRun();
+  void publishClock();
+  ros::Publisher& stepPublisher(int phase);
+  // Lockstep: admit the participants that asked to join, then the pipeline's phases that have work.
+  void lockstepAdmit(uint64_t step);
+  void lockstepPhases(uint64_t step, bool wait);
+  bool lockstepRound(uint64_t step, int phase, const std::vector<std::string>& run, bool wait);
+  void lockstepWaitForCmds();
+  void lockstepAckCallback(const asv_msgs::LockstepAck::ConstPtr& msg);
+  bool waitFor(const std::function<bool()>& done, const char* what);
   void publishState(bool odom, bool ships);
   void publishNmea(const std::vector<std::string>& lines, const ros::Time& stamp, const char* frame);
   void publishEvents(size_t from);
@@ -84,7 +115,20 @@ private:
   ros::Subscriber keep_up_sub_;
   double keep_up_time_ = -1.0;  // [s, sim] stamp of the last message on keep_up_topic (-1: none yet)
   uint64_t keep_up_timeouts_ = 0;
-  std::map<size_t, std::vector<geometry_msgs::Point>> trails_;  // markers: where each ship has been
+  std::map<size_t, std::vector<geometry_msgs::Point>> trails_;
+  asv::LockstepCoordinator lockstep_;
+  std::map<int, ros::Publisher> step_pubs_;  // per phase (asv_ros::lockstepStepTopic)
+  uint64_t clock_step_ = 0;
+  size_t events_done_ =
+      0;  // events already published                   // the lockstep step whose time /clock last carried
+  ros::Subscriber ack_sub_;
+  std::set<std::string> lockstep_waiting_;  // participants that have not answered the current round
+  uint64_t lockstep_round_step_ = 0;
+  int lockstep_round_phase_ = -1;
+  uint64_t lockstep_rounds_ = 0, lockstep_timeouts_ = 0;
+  std::map<std::string, uint64_t> cmds_received_;    // per cmd topic
+  std::map<std::string, ros::WallTime> last_hello_;  // lockstep start-up: when each participant last asked //
+                                                     // markers: where each ship has been
 };
 
 }  // namespace asv_sim

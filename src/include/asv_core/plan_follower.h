@@ -55,6 +55,13 @@ Plan planObservingGiveWay(const std::function<Plan(const PlanningProblem&)>& mak
                           int retries = 3);
 bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
 
+// Whether a plan may use tracked targets that no risk assessment covers (risk-blind: no encounter, no
+// role, so the own ship could give way to a ship it must stand on for). Only when the risk picture has
+// gone silent: no fresh assessment, and the node has waited stale_after since its first input. Before
+// that, at start-up, tracks reach the planner before their first assessment: they are left out.
+// Times in seconds on one clock; first_input < 0: nothing received yet.
+bool riskBlindPlanning(bool risk_fresh, double now, double first_input, double stale_after);
+
 class PlanFollower {
 public:
   explicit PlanFollower(const PlanFollowerConfig& config = {});
