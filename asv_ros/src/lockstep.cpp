@@ -73,6 +73,15 @@ void Lockstep::hello() {
     hello_timer_.stop();
     return;
   }
+  // /lockstep outlives a launch on its master: a node started later, with no simulator to step it,
+  // would wait for ever. Say so.
+  if (hello_since_.isZero())
+    hello_since_ = ros::WallTime::now();
+  if ((ros::WallTime::now() - hello_since_).toSec() > 10.0)
+    ROS_WARN_THROTTLE(10.0,
+                      "%s: /lockstep is true but no simulator has admitted this node after %.0f s: its input "
+                      "is held until sim_node steps it (set /lockstep false for live or replayed data)",
+                      name_.c_str(), (ros::WallTime::now() - hello_since_).toSec());
   // Ask only while every input is connected to every publisher the master knows: a message published
   // before would be lost to this node. (sim_node admits once every hello is fresh and settled.)
   for (const Input& in : inputs_)

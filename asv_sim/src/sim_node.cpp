@@ -30,6 +30,7 @@ constexpr double kEpoch = 1.0e9;  // [s] ROS time of simulation time 0
 
 const std::set<std::string> kKnownParams = {"scenario",
                                             "lockstep_participants",
+                                            "lockstep_clock_every_step",
                                             "seed",
                                             "max_sim_time",
                                             "keep_up_topic",
@@ -120,6 +121,7 @@ SimNodeParams loadParams(const ros::NodeHandle& pnh) {
   p.lockstep = asv_ros::lockstepEnabled();
   p.lockstep_timeout = asv_ros::lockstepTimeout();
   get(pnh, "lockstep_participants", p.lockstep_participants);
+  get(pnh, "lockstep_clock_every_step", p.lockstep_clock_every_step);
   if (!(p.keep_up_lead > 0.0) || !(p.keep_up_timeout > 0.0))
     throw std::invalid_argument("keep_up_lead and keep_up_timeout must be > 0 s");
   if (!(p.max_sim_time >= 0.0))
@@ -646,7 +648,7 @@ void SimNode::lockstepStart() {
 int SimNode::runLockstep() {
   lockstepStart();
   const int odom_every = everySteps(params_.odom_rate), ships_every = everySteps(params_.ships_rate);
-  const int clock_every = everySteps(1.0);
+  const int clock_every = params_.lockstep_clock_every_step ? 1 : everySteps(1.0);
   const ros::WallTime wall_start = ros::WallTime::now();
   ros::WallTime last_diag = wall_start;
   uint64_t k = 0;

@@ -131,6 +131,7 @@ private:
   ros::WallTimer hello_timer_, retry_timer_;
   asv_msgs::LockstepStep::ConstPtr pending_;
   ros::WallTime pending_since_;
+  ros::WallTime hello_since_;  // first attempt to join
 };
 
 }  // namespace asv_ros
