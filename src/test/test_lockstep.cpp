@@ -20,6 +20,16 @@ LockstepCoordinator pipeline() {
     c.admit(n);
   return c;
 }
+
+// Every participant acts at t0 (its first step); then only the tracker has a job, due at t0 + 0.5 s.
+void firstStep(LockstepCoordinator& c, int64_t t0) {
+  for (int phase : {1, 2, 3}) {
+    const Names r = c.runners(phase, t0);
+    c.started(r);
+    for (const auto& n : r)
+      c.acked(n, {}, n == "/tracker" ? t0 + kSec / 2 : 0);
+  }
+}
 }  // namespace
 
 TEST(Lockstep, AdmissionWaitsForTheNextStepAndEveryNewcomerRunsFirst) {
@@ -40,12 +50,7 @@ TEST(Lockstep, AdmissionWaitsForTheNextStepAndEveryNewcomerRunsFirst) {
 TEST(Lockstep, RunnersAreThoseWithADueJobOrNewTriggerInput) {
   LockstepCoordinator c = pipeline();
   const int64_t t0 = 100 * kSec;
-  for (int phase : {1, 2, 3}) {
-    const Names r = c.runners(phase, t0);
-    c.started(r);
-    for (const auto& n : r)
-      c.acked(n, {}, n == "/tracker" ? t0 + kSec / 2 : 0);
-  }
+  firstStep(c, t0);
   const int64_t t1 = t0 + kSec / 10;
   // Odometry alone wakes nobody: it is read, not a trigger.
   c.published("/own/odom");
@@ -107,12 +112,7 @@ TEST(Lockstep, AcknowledgementsOfUnknownNodesAreIgnored) {
 TEST(Lockstep, AnyRunnerLooksAtEveryPhase) {
   LockstepCoordinator c = pipeline();
   const int64_t t0 = 100 * kSec;
-  for (int phase : {1, 2, 3}) {
-    const Names r = c.runners(phase, t0);
-    c.started(r);
-    for (const auto& n : r)
-      c.acked(n, {}, n == "/tracker" ? t0 + kSec / 2 : 0);
-  }
+  firstStep(c, t0);
   EXPECT_FALSE(c.anyRunner(t0 + kSec / 10));  // nothing due, no new trigger input
   EXPECT_TRUE(c.anyRunner(t0 + kSec / 2));    // the tracker's job (phase 2)
   c.published("/targets");                    // a trigger of the risk node (phase 3)
