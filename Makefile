@@ -51,7 +51,7 @@ test: build
 	@rm -rf build/test_results
 	@$(DEVEL) && $(CATKIN) run_tests -j1 > build/run_tests.log 2>&1 || true
 	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING|ModuleNotFoundError|ImportError" build/run_tests.log || true
-	@scripts/fuzz_smoke.sh 15 || true
+	@scripts/fuzz_smoke.sh || true
 	@if [ "$(ASAN)" = 1 ]; then echo "test: asv_core unit tests under ASan+UBSan (build_asan/, log build/asan.log)..."; \
 	  JOBS=$(JOBS) scripts/asan_tests.sh > build/asan.log 2>&1 || true; fi
 	@scripts/test_summary.py build/test_results

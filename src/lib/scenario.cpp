@@ -159,17 +159,25 @@ double readSpeed(const Ctx& c, const YAML::Node& n, const std::string& where) {
 // Nodes flatten() visits at most. YAML aliases let a small file name one mapping many times (26
 // nested aliases of 2 KB make 2^26 parameters, "billion laughs"): the cap keeps loading linear.
 constexpr std::size_t kMaxPlannerParamNodes = 10000;
+// Nesting levels below planner_params (a plugin's own keys use two or three). A mapping that holds an
+// alias of itself nests without end: each level lengthens every key, so 10000 nodes would be hundreds
+// of MB of key text before the node cap stops it.
+constexpr std::size_t kMaxPlannerParamDepth = 8;
 
 void flatten(const Ctx& c, const YAML::Node& n, const std::string& prefix, ParamMap& out,
-             std::size_t& budget) {
+             std::size_t& budget, std::size_t depth = 0) {
   if (budget == 0)
     c.fail(n, "planner_params", "more than 10000 entries (aliases expanding recursively?)");
   --budget;
   if (n.IsMap()) {
+    if (depth == kMaxPlannerParamDepth)
+      c.fail(n, "planner_params." + prefix,
+             "nested deeper than " + std::to_string(kMaxPlannerParamDepth) +
+                 " levels (a mapping holding an alias of itself?)");
     for (const auto& kv : n)
       flatten(c, kv.second,
               prefix.empty() ? kv.first.as<std::string>() : prefix + "/" + kv.first.as<std::string>(), out,
-              budget);
+              budget, depth + 1);
   } else if (n.IsScalar()) {
     out.set(prefix, n.as<std::string>());
   } else if (!n.IsNull()) {
