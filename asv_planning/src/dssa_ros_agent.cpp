@@ -9,6 +9,7 @@
 #include <asv_core/units.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
+#include <asv_ros/params.h>
 #include <nav_msgs/Path.h>
 #include <tf2/utils.h>
 
@@ -33,18 +34,14 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
 
 DssaExchangeParams DssaExchangeParams::load(const ros::NodeHandle& pnh) {
   DssaExchangeParams p;
-  std::vector<std::string> names;
-  const std::string prefix = pnh.getNamespace() + "/exchange/";
-  if (ros::param::getParamNames(names))
-    for (const auto& n : names)
-      if (n.compare(0, prefix.size(), prefix) == 0 && !kExchangeKeys.count(n.substr(prefix.size())))
-        throw std::invalid_argument("unknown parameter '" + n + "' (see asv_planning/config/dssa.yaml)");
-  pnh.param("exchange/topic", p.topic, p.topic);
-  pnh.param("exchange/round_timeout", p.round_timeout, p.round_timeout);
-  pnh.param("exchange/forget_after", p.forget_after, p.forget_after);
-  pnh.param("exchange/arrival_radius", p.arrival_radius, p.arrival_radius);
-  pnh.param("exchange/drop_outgoing_from", p.drop_outgoing_from, p.drop_outgoing_from);
-  pnh.param("exchange/drop_outgoing_until", p.drop_outgoing_until, p.drop_outgoing_until);
+  const ros::NodeHandle exchange(pnh, "exchange");
+  asv_ros::checkUnknownParams(exchange, kExchangeKeys, "asv_planning/config/dssa.yaml");
+  asv_ros::getParam(exchange, "topic", p.topic);
+  asv_ros::getParam(exchange, "round_timeout", p.round_timeout);
+  asv_ros::getParam(exchange, "forget_after", p.forget_after);
+  asv_ros::getParam(exchange, "arrival_radius", p.arrival_radius);
+  asv_ros::getParam(exchange, "drop_outgoing_from", p.drop_outgoing_from);
+  asv_ros::getParam(exchange, "drop_outgoing_until", p.drop_outgoing_until);
   if (p.topic.empty() || !(p.round_timeout > 0.0) || !(p.forget_after > 0.0) || !(p.arrival_radius >= 0.0) ||
       !std::isfinite(p.drop_outgoing_from) || !std::isfinite(p.drop_outgoing_until))
     throw std::invalid_argument(
@@ -56,7 +53,7 @@ bool DssaRosAgent::wanted(const std::string& planner, const ros::NodeHandle& pnh
   // Off by default: an agent sees only ships that exchange intentions, so against ordinary traffic
   // (AIS/radar targets) the single-ship plugin is the safe choice. agents.launch turns it on.
   bool distributed = false;
-  pnh.param("distributed", distributed, distributed);
+  asv_ros::getParam(pnh, "distributed", distributed);
   return distributed && (planner == "dssa" || planner == "dssa_plus");
 }
 

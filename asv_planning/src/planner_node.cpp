@@ -12,6 +12,7 @@
 #include <asv_core/scenario.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
+#include <asv_ros/params.h>
 #include <nav_msgs/Path.h>
 #include <tf2/utils.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -51,43 +52,36 @@ const std::set<std::string> kKnownParams = {"planner",
                                             "stand_on_policy",
                                             "risk_clear_time"};
 
-template <typename T>
-void get(const ros::NodeHandle& pnh, const std::string& key, T& value) {
-  if (pnh.hasParam(key) && !pnh.getParam(key, value))
-    throw std::invalid_argument("parameter '" + pnh.resolveName(key) +
-                                "' has the wrong type (see asv_planning/config/planner_node.yaml)");
-}
-
 }  // namespace
 
 PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh) {
   PlannerNodeParams& p = params_;
-  get(pnh, "planner", p.planner);
-  get(pnh, "ship", p.ship);
-  get(pnh, "frame_id", p.frame_id);
-  get(pnh, "scenario", p.scenario);
-  get(pnh, "cruise_speed", p.cruise_speed);
-  get(pnh, "replan_period", p.replan_period);
-  get(pnh, "min_replan_interval", p.min_replan_interval);
-  get(pnh, "time_budget", p.time_budget);
-  get(pnh, "lockstep_time_budget", p.lockstep_time_budget);
-  get(pnh, "overrun_factor", p.overrun_factor);
-  get(pnh, "fault_plan_delay", p.fault_plan_delay);
-  get(pnh, "setpoint_rate", p.setpoint_rate);
-  get(pnh, "waypoint_acceptance", p.waypoint_acceptance);
-  get(pnh, "fallback_speed_factor", p.fallback_speed_factor);
-  get(pnh, "extremis_range", p.extremis_range);
-  get(pnh, "stale_after", p.stale_after);
-  get(pnh, "plan_clearance", p.plan_clearance);
-  get(pnh, "prediction_horizon", p.prediction_horizon);
-  get(pnh, "seed", p.seed);
-  get(pnh, "max_speed", p.limits.max_speed);
-  get(pnh, "min_speed", p.limits.min_speed);
-  get(pnh, "turn_rate", p.limits.turn_rate);
-  get(pnh, "turn_delay", p.limits.turn_delay);
-  get(pnh, "min_separation", p.min_separation);
-  get(pnh, "stand_on_policy", p.stand_on_policy);
-  get(pnh, "risk_clear_time", p.risk_clear_time);
+  asv_ros::getParam(pnh, "planner", p.planner);
+  asv_ros::getParam(pnh, "ship", p.ship);
+  asv_ros::getParam(pnh, "frame_id", p.frame_id);
+  asv_ros::getParam(pnh, "scenario", p.scenario);
+  asv_ros::getParam(pnh, "cruise_speed", p.cruise_speed);
+  asv_ros::getParam(pnh, "replan_period", p.replan_period);
+  asv_ros::getParam(pnh, "min_replan_interval", p.min_replan_interval);
+  asv_ros::getParam(pnh, "time_budget", p.time_budget);
+  asv_ros::getParam(pnh, "lockstep_time_budget", p.lockstep_time_budget);
+  asv_ros::getParam(pnh, "overrun_factor", p.overrun_factor);
+  asv_ros::getParam(pnh, "fault_plan_delay", p.fault_plan_delay);
+  asv_ros::getParam(pnh, "setpoint_rate", p.setpoint_rate);
+  asv_ros::getParam(pnh, "waypoint_acceptance", p.waypoint_acceptance);
+  asv_ros::getParam(pnh, "fallback_speed_factor", p.fallback_speed_factor);
+  asv_ros::getParam(pnh, "extremis_range", p.extremis_range);
+  asv_ros::getParam(pnh, "stale_after", p.stale_after);
+  asv_ros::getParam(pnh, "plan_clearance", p.plan_clearance);
+  asv_ros::getParam(pnh, "prediction_horizon", p.prediction_horizon);
+  asv_ros::getParam(pnh, "seed", p.seed);
+  asv_ros::getParam(pnh, "max_speed", p.limits.max_speed);
+  asv_ros::getParam(pnh, "min_speed", p.limits.min_speed);
+  asv_ros::getParam(pnh, "turn_rate", p.limits.turn_rate);
+  asv_ros::getParam(pnh, "turn_delay", p.limits.turn_delay);
+  asv_ros::getParam(pnh, "min_separation", p.min_separation);
+  asv_ros::getParam(pnh, "stand_on_policy", p.stand_on_policy);
+  asv_ros::getParam(pnh, "risk_clear_time", p.risk_clear_time);
   if (pnh.hasParam("goal_x") || pnh.hasParam("goal_y")) {
     if (!pnh.getParam("goal_x", p.goal.x()) || !pnh.getParam("goal_y", p.goal.y()))
       throw std::invalid_argument("give both goal_x and goal_y (metres, map frame)");
@@ -101,21 +95,10 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
     throw std::invalid_argument("planner_node: a parameter is out of range (see config/planner_node.yaml)");
 
   // Unknown private keys are typos, except the plugin's own subtree.
-  std::vector<std::string> names;
+  // The plugin checks its own subtree; ~exchange/ is DssaRosAgent's (it checks its keys).
+  asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_planning/config/planner_node.yaml",
+                              {p.planner + "/", "exchange/"});
   asv::ParamMap plugin_params;
-  if (ros::param::getParamNames(names)) {
-    const std::string prefix = pnh.getNamespace() + "/";
-    for (const auto& n : names) {
-      if (n.compare(0, prefix.size(), prefix) != 0)
-        continue;
-      const std::string key = n.substr(prefix.size());
-      if (key.compare(0, p.planner.size() + 1, p.planner + "/") == 0 || key.compare(0, 9, "exchange/") == 0)
-        continue;  // the plugin's own subtree; ~exchange/ is DssaRosAgent's (it checks its keys)
-      if (!kKnownParams.count(key))
-        throw std::invalid_argument("unknown parameter '" + n +
-                                    "' (see asv_planning/config/planner_node.yaml)");
-    }
-  }
   if (!p.scenario.empty()) {
     const asv::Scenario sc = asv::loadScenario(p.scenario);
     obstacles_ = sc.obstacles;

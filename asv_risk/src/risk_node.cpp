@@ -5,6 +5,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include <asv_ros/params.h>
 #include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
@@ -43,26 +44,6 @@ const std::set<std::string> kKnownParams = {"own_ship",
                                             "colregs/stern_sector_start_deg",
                                             "colregs/max_range"};
 
-void checkUnknownParams(const ros::NodeHandle& pnh) {
-  std::vector<std::string> names;
-  if (!ros::param::getParamNames(names))
-    return;
-  const std::string prefix = pnh.getNamespace() + "/";
-  for (const std::string& n : names) {
-    if (n.compare(0, prefix.size(), prefix) != 0)
-      continue;
-    const std::string key = n.substr(prefix.size());
-    if (!kKnownParams.count(key))
-      throw std::invalid_argument("unknown parameter '" + n +
-                                  "' (typo? see config/risk_node.yaml for the keys)");
-  }
-}
-
-template <typename T>
-void get(const ros::NodeHandle& pnh, const std::string& key, T& value) {
-  pnh.param(key, value, value);
-}
-
 float riskColour(uint8_t level, int channel) {
   // green (none), amber (collision risk), red (urgent)
   static const float rgb[3][3] = {{0.1f, 0.8f, 0.2f}, {1.0f, 0.65f, 0.0f}, {0.9f, 0.1f, 0.1f}};
@@ -72,40 +53,40 @@ float riskColour(uint8_t level, int channel) {
 }  // namespace
 
 RiskNodeParams loadParams(const ros::NodeHandle& pnh) {
-  checkUnknownParams(pnh);
+  asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_risk/config/risk_node.yaml");
   RiskNodeParams p;
-  get(pnh, "own_ship", p.own_ship);
-  get(pnh, "frame_id", p.frame_id);
-  get(pnh, "stale_after", p.stale_after);
-  get(pnh, "future_tolerance", p.future_tolerance);
-  get(pnh, "odom_timeout", p.odom_timeout);
-  get(pnh, "publish_markers", p.publish_markers);
-  get(pnh, "min_rate", p.min_rate);
-  get(pnh, "max_rate", p.max_rate);
+  asv_ros::getParam(pnh, "own_ship", p.own_ship);
+  asv_ros::getParam(pnh, "frame_id", p.frame_id);
+  asv_ros::getParam(pnh, "stale_after", p.stale_after);
+  asv_ros::getParam(pnh, "future_tolerance", p.future_tolerance);
+  asv_ros::getParam(pnh, "odom_timeout", p.odom_timeout);
+  asv_ros::getParam(pnh, "publish_markers", p.publish_markers);
+  asv_ros::getParam(pnh, "min_rate", p.min_rate);
+  asv_ros::getParam(pnh, "max_rate", p.max_rate);
   auto& l = p.risk.level;
-  get(pnh, "risk_level/t_max", l.t_max_s);
-  get(pnh, "risk_level/d_min", l.d_min_m);
-  get(pnh, "risk_level/t_safe", l.t_safe_s);
-  get(pnh, "risk_level/d_safe", l.d_safe_m);
+  asv_ros::getParam(pnh, "risk_level/t_max", l.t_max_s);
+  asv_ros::getParam(pnh, "risk_level/d_min", l.d_min_m);
+  asv_ros::getParam(pnh, "risk_level/t_safe", l.t_safe_s);
+  asv_ros::getParam(pnh, "risk_level/d_safe", l.d_safe_m);
   auto& c = p.risk.cri;
-  get(pnh, "cri/c_dcpa", c.c_dcpa);
-  get(pnh, "cri/c_tcpa", c.c_tcpa);
-  get(pnh, "cri/c_b", c.c_b);
-  get(pnh, "cri/c_d", c.c_d);
-  get(pnh, "cri/c_k", c.c_k);
-  get(pnh, "cri/dlma", c.dlma_m);
-  get(pnh, "cri/attention_range", c.attention_range_m);
-  get(pnh, "cri/speed_ratio_w", c.speed_ratio_w);
-  get(pnh, "cri/arena_cb", c.arena_cb);
-  get(pnh, "cri/peak_bearing_deg", c.peak_bearing_deg);
-  get(pnh, "cri/zero_when_diverging", c.zero_when_diverging);
-  get(pnh, "cri/domain_unit", c.safe_encounter.domain_unit_m);
-  get(pnh, "cri/turn90_time", c.safe_encounter.turn90_time_s);
-  get(pnh, "cri/advance", c.safe_encounter.advance_m);
+  asv_ros::getParam(pnh, "cri/c_dcpa", c.c_dcpa);
+  asv_ros::getParam(pnh, "cri/c_tcpa", c.c_tcpa);
+  asv_ros::getParam(pnh, "cri/c_b", c.c_b);
+  asv_ros::getParam(pnh, "cri/c_d", c.c_d);
+  asv_ros::getParam(pnh, "cri/c_k", c.c_k);
+  asv_ros::getParam(pnh, "cri/dlma", c.dlma_m);
+  asv_ros::getParam(pnh, "cri/attention_range", c.attention_range_m);
+  asv_ros::getParam(pnh, "cri/speed_ratio_w", c.speed_ratio_w);
+  asv_ros::getParam(pnh, "cri/arena_cb", c.arena_cb);
+  asv_ros::getParam(pnh, "cri/peak_bearing_deg", c.peak_bearing_deg);
+  asv_ros::getParam(pnh, "cri/zero_when_diverging", c.zero_when_diverging);
+  asv_ros::getParam(pnh, "cri/domain_unit", c.safe_encounter.domain_unit_m);
+  asv_ros::getParam(pnh, "cri/turn90_time", c.safe_encounter.turn90_time_s);
+  asv_ros::getParam(pnh, "cri/advance", c.safe_encounter.advance_m);
   auto& g = p.risk.colregs;
-  get(pnh, "colregs/head_on_half_angle_deg", g.head_on_half_angle_deg);
-  get(pnh, "colregs/stern_sector_start_deg", g.stern_sector_start_deg);
-  get(pnh, "colregs/max_range", g.max_range_m);
+  asv_ros::getParam(pnh, "colregs/head_on_half_angle_deg", g.head_on_half_angle_deg);
+  asv_ros::getParam(pnh, "colregs/stern_sector_start_deg", g.stern_sector_start_deg);
+  asv_ros::getParam(pnh, "colregs/max_range", g.max_range_m);
   p.risk.validate();
   if (p.frame_id.empty())
     throw std::invalid_argument("frame_id must not be empty");

@@ -1,15 +1,7 @@
-#include <ros/ros.h>
+#include <asv_ros/node_main.h>
 
 #include "asv_risk/tracker_node.h"
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "tracker");
-  try {
-    asv_risk::TrackerNode node(ros::NodeHandle(), ros::NodeHandle("~"));
-    ros::spin();
-  } catch (const std::exception& e) {
-    ROS_FATAL("tracker: %s", e.what());
-    return 1;
-  }
-  return 0;
+  return asv_ros::spinNode<asv_risk::TrackerNode>(argc, argv, "tracker");
 }

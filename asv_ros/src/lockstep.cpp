@@ -1,6 +1,10 @@
 #include "asv_ros/lockstep.h"
 
+#include <cmath>
 #include <limits>
+#include <stdexcept>
+
+#include "asv_ros/params.h"
 
 #include <xmlrpcpp/XmlRpcValue.h>
 
@@ -29,14 +33,16 @@ std::string lockstepStepTopic(int phase) {
 
 bool lockstepEnabled() {
   bool on = false;
-  ros::param::param("/lockstep", on, false);
+  getParam(ros::NodeHandle(), "/lockstep", on);
   return on;
 }
 
 double lockstepTimeout() {
   double t = 30.0;
-  ros::param::param("/lockstep_timeout", t, 30.0);
-  return t > 0.0 ? t : 30.0;
+  getParam(ros::NodeHandle(), "/lockstep_timeout", t);
+  if (!(t > 0.0 && std::isfinite(t)))
+    throw std::invalid_argument("parameter '/lockstep_timeout' must be a finite number of seconds > 0 (default 30)");
+  return t;
 }
 
 Lockstep::Lockstep(ros::NodeHandle nh, LockstepPhase phase)

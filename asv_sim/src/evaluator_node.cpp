@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include <asv_planning/param_tree.h>
+#include <asv_ros/params.h>
 #include <filesystem>
 
 namespace asv_sim {
@@ -29,14 +30,14 @@ asv::SimEvent::Type toCore(uint8_t type) {
 
 EvaluatorNodeParams loadEvaluatorParams(const ros::NodeHandle& pnh) {
   EvaluatorNodeParams p;
-  pnh.param("own_ship", p.own_ship, p.own_ship);
-  pnh.param("result", p.result, p.result);
-  pnh.param("scenario", p.scenario, p.scenario);
-  pnh.param("planner", p.planner, p.planner);
-  pnh.param("seed", p.seed, p.seed);
-  pnh.param("time_origin", p.time_origin, p.time_origin);
-  pnh.param("shutdown_at_end", p.shutdown_at_end, p.shutdown_at_end);
-  pnh.param("pretty", p.pretty, p.pretty);
+  asv_ros::getParam(pnh, "own_ship", p.own_ship);
+  asv_ros::getParam(pnh, "result", p.result);
+  asv_ros::getParam(pnh, "scenario", p.scenario);
+  asv_ros::getParam(pnh, "planner", p.planner);
+  asv_ros::getParam(pnh, "seed", p.seed);
+  asv_ros::getParam(pnh, "time_origin", p.time_origin);
+  asv_ros::getParam(pnh, "shutdown_at_end", p.shutdown_at_end);
+  asv_ros::getParam(pnh, "pretty", p.pretty);
   if (p.own_ship.empty() || p.seed < 0 || !std::isfinite(p.time_origin))
     throw std::invalid_argument(
         "evaluator_node: own_ship must be set, seed >= 0 (see config/evaluator_node.yaml)");
@@ -45,19 +46,8 @@ EvaluatorNodeParams loadEvaluatorParams(const ros::NodeHandle& pnh) {
   if (pnh.getParam("evaluation", tree))
     asv_planning::flattenParams(tree, "", eval, pnh.resolveName("evaluation") + "/");
   p.evaluation = asv::EvaluationConfig::fromParams(eval);  // rejects unknown keys, validates
-  std::vector<std::string> names;
-  if (ros::param::getParamNames(names)) {
-    const std::string prefix = pnh.getNamespace() + "/";
-    for (const auto& n : names) {
-      if (n.compare(0, prefix.size(), prefix) != 0)
-        continue;
-      const std::string key = n.substr(prefix.size());
-      if (key.compare(0, 11, "evaluation/") == 0)
-        continue;
-      if (!kKnownParams.count(key))
-        throw std::invalid_argument("unknown parameter '" + n + "' (see asv_sim/config/evaluator_node.yaml)");
-    }
-  }
+  // evaluation/ is EvaluationConfig's: fromParams rejects its unknown keys.
+  asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_sim/config/evaluator_node.yaml", {"evaluation/"});
   return p;
 }
 

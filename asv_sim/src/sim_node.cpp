@@ -15,6 +15,7 @@
 #include <asv_msgs/SimEvent.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
+#include <asv_ros/params.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/callback_queue.h>
@@ -72,11 +73,6 @@ const std::set<std::string> kKnownParams = {"scenario",
                                             "ais_dropout",
                                             "static_interval"};
 
-template <typename T>
-void get(const ros::NodeHandle& pnh, const std::string& key, T& value) {
-  pnh.param(key, value, value);
-}
-
 geometry_msgs::Quaternion yawQuaternion(double yaw) {
   geometry_msgs::Quaternion q;
   q.z = std::sin(yaw / 2.0);
@@ -87,73 +83,67 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
 }  // namespace
 
 SimNodeParams loadParams(const ros::NodeHandle& pnh) {
-  std::vector<std::string> names;
-  if (ros::param::getParamNames(names)) {
-    const std::string prefix = pnh.getNamespace() + "/";
-    for (const auto& n : names)
-      if (n.compare(0, prefix.size(), prefix) == 0 && !kKnownParams.count(n.substr(prefix.size())))
-        throw std::invalid_argument("unknown parameter '" + n + "' (see asv_sim/config/sim_node.yaml)");
-  }
+  asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_sim/config/sim_node.yaml");
   SimNodeParams p;
-  get(pnh, "scenario", p.scenario);
+  asv_ros::getParam(pnh, "scenario", p.scenario);
   int seed = static_cast<int>(p.seed);
-  get(pnh, "seed", seed);
+  asv_ros::getParam(pnh, "seed", seed);
   if (seed < 0)
     throw std::invalid_argument("seed must be >= 0");
   p.seed = static_cast<uint64_t>(seed);
-  get(pnh, "rate", p.rate);
-  get(pnh, "publish_clock", p.publish_clock);
-  get(pnh, "odom_rate", p.odom_rate);
-  get(pnh, "ships_rate", p.ships_rate);
-  get(pnh, "emit_topic", p.emit_topic);
-  get(pnh, "emit_udp", p.emit_udp);
-  get(pnh, "udp_host", p.udp_host);
-  get(pnh, "udp_port", p.udp_port);
-  get(pnh, "stop_on_collision", p.stop_on_collision);
-  get(pnh, "shutdown_at_end", p.shutdown_at_end);
-  get(pnh, "linger_for", p.linger_for);
-  get(pnh, "linger_max", p.linger_max);
-  get(pnh, "start_delay", p.start_delay);
-  get(pnh, "max_sim_time", p.max_sim_time);
-  get(pnh, "keep_up_topic", p.keep_up_topic);
-  get(pnh, "keep_up_lead", p.keep_up_lead);
-  get(pnh, "keep_up_timeout", p.keep_up_timeout);
+  asv_ros::getParam(pnh, "rate", p.rate);
+  asv_ros::getParam(pnh, "publish_clock", p.publish_clock);
+  asv_ros::getParam(pnh, "odom_rate", p.odom_rate);
+  asv_ros::getParam(pnh, "ships_rate", p.ships_rate);
+  asv_ros::getParam(pnh, "emit_topic", p.emit_topic);
+  asv_ros::getParam(pnh, "emit_udp", p.emit_udp);
+  asv_ros::getParam(pnh, "udp_host", p.udp_host);
+  asv_ros::getParam(pnh, "udp_port", p.udp_port);
+  asv_ros::getParam(pnh, "stop_on_collision", p.stop_on_collision);
+  asv_ros::getParam(pnh, "shutdown_at_end", p.shutdown_at_end);
+  asv_ros::getParam(pnh, "linger_for", p.linger_for);
+  asv_ros::getParam(pnh, "linger_max", p.linger_max);
+  asv_ros::getParam(pnh, "start_delay", p.start_delay);
+  asv_ros::getParam(pnh, "max_sim_time", p.max_sim_time);
+  asv_ros::getParam(pnh, "keep_up_topic", p.keep_up_topic);
+  asv_ros::getParam(pnh, "keep_up_lead", p.keep_up_lead);
+  asv_ros::getParam(pnh, "keep_up_timeout", p.keep_up_timeout);
   p.lockstep = asv_ros::lockstepEnabled();
   p.lockstep_timeout = asv_ros::lockstepTimeout();
-  get(pnh, "lockstep_participants", p.lockstep_participants);
-  get(pnh, "lockstep_clock_every_step", p.lockstep_clock_every_step);
+  asv_ros::getParam(pnh, "lockstep_participants", p.lockstep_participants);
+  asv_ros::getParam(pnh, "lockstep_clock_every_step", p.lockstep_clock_every_step);
   if (!(p.keep_up_lead > 0.0) || !(p.keep_up_timeout > 0.0))
     throw std::invalid_argument("keep_up_lead and keep_up_timeout must be > 0 s");
   if (!(p.max_sim_time >= 0.0))
     throw std::invalid_argument("max_sim_time must be >= 0 s (0: the scenario's duration)");
   auto& s = p.sim;
-  get(pnh, "dt", s.dt);
-  get(pnh, "collision_distance", s.collision_distance);
-  get(pnh, "wind_speed", s.environment.wind_speed);
+  asv_ros::getParam(pnh, "dt", s.dt);
+  asv_ros::getParam(pnh, "collision_distance", s.collision_distance);
+  asv_ros::getParam(pnh, "wind_speed", s.environment.wind_speed);
   double wind_dir = asv::radToDeg(s.environment.wind_direction),
          wave_dir = asv::radToDeg(s.environment.wave_direction);
-  get(pnh, "wind_direction_deg", wind_dir);
-  get(pnh, "wave_direction_deg", wave_dir);
+  asv_ros::getParam(pnh, "wind_direction_deg", wind_dir);
+  asv_ros::getParam(pnh, "wave_direction_deg", wave_dir);
   s.environment.wind_direction = asv::degToRad(wind_dir);
   s.environment.wave_direction = asv::degToRad(wave_dir);
-  get(pnh, "wave_height", s.environment.wave_height);
-  get(pnh, "wave_length", s.environment.wave_length);
-  get(pnh, "give_way_alteration_deg", s.traffic.give_way_alteration_deg);
-  get(pnh, "give_way_tcpa", s.traffic.give_way_tcpa);
-  get(pnh, "give_way_dcpa", s.traffic.give_way_dcpa);
-  get(pnh, "waypoint_acceptance", s.traffic.waypoint_acceptance);
+  asv_ros::getParam(pnh, "wave_height", s.environment.wave_height);
+  asv_ros::getParam(pnh, "wave_length", s.environment.wave_length);
+  asv_ros::getParam(pnh, "give_way_alteration_deg", s.traffic.give_way_alteration_deg);
+  asv_ros::getParam(pnh, "give_way_tcpa", s.traffic.give_way_tcpa);
+  asv_ros::getParam(pnh, "give_way_dcpa", s.traffic.give_way_dcpa);
+  asv_ros::getParam(pnh, "waypoint_acceptance", s.traffic.waypoint_acceptance);
   auto& e = p.emitter;
-  get(pnh, "ais", e.ais);
-  get(pnh, "radar", e.radar);
-  get(pnh, "radar_range", e.radar_range);
-  get(pnh, "radar_period", e.radar_period);
-  get(pnh, "range_noise", e.range_noise);
-  get(pnh, "bearing_noise_deg", e.bearing_noise_deg);
-  get(pnh, "speed_noise_kn", e.speed_noise_kn);
-  get(pnh, "course_noise_deg", e.course_noise_deg);
-  get(pnh, "radar_dropout", e.radar_dropout);
-  get(pnh, "ais_dropout", e.ais_dropout);
-  get(pnh, "static_interval", e.static_interval);
+  asv_ros::getParam(pnh, "ais", e.ais);
+  asv_ros::getParam(pnh, "radar", e.radar);
+  asv_ros::getParam(pnh, "radar_range", e.radar_range);
+  asv_ros::getParam(pnh, "radar_period", e.radar_period);
+  asv_ros::getParam(pnh, "range_noise", e.range_noise);
+  asv_ros::getParam(pnh, "bearing_noise_deg", e.bearing_noise_deg);
+  asv_ros::getParam(pnh, "speed_noise_kn", e.speed_noise_kn);
+  asv_ros::getParam(pnh, "course_noise_deg", e.course_noise_deg);
+  asv_ros::getParam(pnh, "radar_dropout", e.radar_dropout);
+  asv_ros::getParam(pnh, "ais_dropout", e.ais_dropout);
+  asv_ros::getParam(pnh, "static_interval", e.static_interval);
   if (p.scenario.empty())
     throw std::invalid_argument("~scenario (path of a scenario file) is required");
   if (!(p.rate >= 0.0) || !std::isfinite(p.rate))
@@ -179,10 +169,10 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
   for (const auto& v : sim_->vessels()) {
     odom_pubs_.push_back(nh_.advertise<nav_msgs::Odometry>(v.name + "/odom", 50));
     if (v.own || v.behaviour == asv::Behaviour::Planner) {
-      const std::string ship = v.name;
+      const std::string ship = v.name, topic = nh_.resolveName(ship + "/cmd");
       cmd_subs_.push_back(nh_.subscribe<asv_msgs::CourseSpeedSetpoint>(
-          ship + "/cmd", 10,
-          [this, ship](const asv_msgs::CourseSpeedSetpoint::ConstPtr& m) { cmdCallback(ship, m); },
+          topic, 10,
+          [this, ship, topic](const asv_msgs::CourseSpeedSetpoint::ConstPtr& m) { cmdCallback(ship, topic, m); },
           ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay()));
     }
   }
@@ -219,8 +209,9 @@ SimNode::~SimNode() {
     ::close(udp_fd_);
 }
 
-void SimNode::cmdCallback(const std::string& ship, const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg) {
-  ++cmds_received_[nh_.resolveName(ship + "/cmd")];
+void SimNode::cmdCallback(const std::string& ship, const std::string& topic,
+                          const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg) {
+  ++cmds_received_[topic];
   if (sim_->setSetpoint(ship, msg->course, msg->speed)) {
     ++cmds_ok_;
   } else {
@@ -401,6 +392,7 @@ void SimNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     stat.add("lockstep participants", lockstep_.participants());
     stat.add("lockstep rounds", lockstep_rounds_);
     stat.add("lockstep waits timed out", lockstep_timeouts_);
+    stat.add("lockstep requests to join refused", lockstep_rejected_);
   }
   stat.add("set-points accepted", cmds_ok_);
   stat.add("set-points rejected", cmds_rejected_);
@@ -410,6 +402,8 @@ void SimNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "collision");
   else if (lockstep_timeouts_ > 0)
     stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "a lockstep participant did not answer in time");
+  else if (lockstep_rejected_ > 0)
+    stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "refused a lockstep request to join");
   else if (!params_.lockstep && params_.rate > 0.0 && achieved_rtf_ < 0.8 * params_.rate)
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "slower than the requested real-time factor");
   else
@@ -534,10 +528,15 @@ void SimNode::lockstepAckCallback(const asv_msgs::LockstepAck::ConstPtr& msg) {
     std::vector<asv::LockstepInput> inputs;
     for (size_t i = 0; i < msg->inputs.size(); ++i)
       inputs.push_back({msg->inputs[i], i < msg->triggers.size() && msg->triggers[i]});
-    if (!lockstep_.admitted(msg->node) && lockstep_.pendingAdmissions().size() < lockstep_.participants())
-      ROS_INFO_ONCE("sim_node: lockstep participants are asking to join");
+    if (!lockstep_.hello(msg->node, msg->phase, inputs)) {
+      ++lockstep_rejected_;
+      ROS_ERROR_THROTTLE(5.0, "sim_node: lockstep: refused '%s' asking to join phase %d (a participant "
+                              "has a name and a phase of 1 or more; phase 0 is admission)",
+                         msg->node.c_str(), static_cast<int>(msg->phase));
+      return;
+    }
+    ROS_INFO_ONCE("sim_node: lockstep participants are asking to join");
     stepPublisher(msg->phase);  // a participant of a phase the stack does not know: it asks again
-    lockstep_.hello(msg->node, msg->phase, inputs);
     last_hello_[msg->node] = ros::WallTime::now();
     return;
   }

@@ -1,14 +1,10 @@
-#include <ros/ros.h>
+#include <asv_ros/node_main.h>
 
 #include "asv_sim/sim_node.h"
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "sim_node");
-  try {
-    asv_sim::SimNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+  return asv_ros::runNode(argc, argv, "sim_node", [](ros::NodeHandle& nh, ros::NodeHandle& pnh) {
+    asv_sim::SimNode node(nh, pnh);
     return node.run();
-  } catch (const std::exception& e) {
-    ROS_FATAL("sim_node: %s", e.what());
-    return 1;
-  }
+  });
 }

@@ -4,12 +4,14 @@
 
 namespace asv {
 
-void LockstepCoordinator::hello(const std::string& node, int phase,
+bool LockstepCoordinator::hello(const std::string& node, int phase,
                                 const std::vector<LockstepInput>& inputs) {
+  if (node.empty() || phase < 1)
+    return false;
   auto it = parts_.find(node);
   if (it != parts_.end()) {
     if (!it->second.admitted)
-      return;  // repeated hello while waiting for admission
+      return true;  // repeated hello while waiting for admission
     for (const auto& [topic, n] : it->second.outputs)
       retired_[topic] += n;
   }
@@ -17,6 +19,7 @@ void LockstepCoordinator::hello(const std::string& node, int phase,
   p.phase = phase;
   p.inputs = inputs;
   parts_[node] = std::move(p);
+  return true;
 }
 
 std::vector<std::string> LockstepCoordinator::pendingAdmissions() const {

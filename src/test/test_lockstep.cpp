@@ -47,6 +47,19 @@ TEST(Lockstep, AdmissionWaitsForTheNextStepAndEveryNewcomerRunsFirst) {
   EXPECT_EQ(c.runners(1, 5 * kSec), (Names{"/a"}));
 }
 
+TEST(Lockstep, AJoinWithoutANameOrAWorkPhaseIsRefused) {
+  LockstepCoordinator c;
+  // Phase 0 is the admission round: a participant there would be admitted again at every step.
+  EXPECT_FALSE(c.hello("/zero", 0, {}));
+  EXPECT_FALSE(c.hello("/negative", -1, {}));
+  EXPECT_FALSE(c.hello("", 1, {}));
+  EXPECT_EQ(c.participants(), 0u);
+  EXPECT_TRUE(c.pendingAdmissions().empty());
+  EXPECT_TRUE(c.hello("/a", 1, {}));
+  EXPECT_TRUE(c.hello("/late_phase", 9, {}));  // a phase the stack does not name yet is still a phase
+  EXPECT_EQ(c.pendingAdmissions(), (Names{"/a", "/late_phase"}));
+}
+
 TEST(Lockstep, RunnersAreThoseWithADueJobOrNewTriggerInput) {
   LockstepCoordinator c = pipeline();
   const int64_t t0 = 100 * kSec;

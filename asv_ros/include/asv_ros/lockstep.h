@@ -36,7 +36,8 @@ std::string lockstepStepTopic(int phase);
 
 // The global parameters: /lockstep (default false) and /lockstep_timeout ([s, wall], default 30: the
 // longest wait for a step's input or a participant's answer; then the run goes on, with an error).
-// Each asks the master: read them once.
+// Each asks the master: read them once. A value of the wrong type, or a timeout not > 0, is
+// std::invalid_argument.
 bool lockstepEnabled();
 double lockstepTimeout();
 

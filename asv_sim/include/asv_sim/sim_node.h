@@ -100,7 +100,8 @@ private:
   void publishState(bool odom, bool ships);
   void publishNmea(const std::vector<std::string>& lines, const ros::Time& stamp, const char* frame);
   void publishEvents(size_t from);
-  void cmdCallback(const std::string& ship, const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg);
+  void cmdCallback(const std::string& ship, const std::string& topic,
+                   const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
 
   ros::NodeHandle nh_, pnh_;
@@ -118,20 +119,19 @@ private:
   ros::Subscriber keep_up_sub_;
   double keep_up_time_ = -1.0;  // [s, sim] stamp of the last message on keep_up_topic (-1: none yet)
   uint64_t keep_up_timeouts_ = 0;
-  std::map<size_t, std::vector<geometry_msgs::Point>> trails_;
+  std::map<size_t, std::vector<geometry_msgs::Point>> trails_;  // markers: where each ship has been
   asv::LockstepCoordinator lockstep_;
   std::map<int, ros::Publisher> step_pubs_;  // per phase (asv_ros::lockstepStepTopic)
-  uint64_t clock_step_ = 0;
-  size_t events_done_ =
-      0;  // events already published                   // the lockstep step whose time /clock last carried
+  uint64_t clock_step_ = 0;  // the lockstep step whose time /clock last carried
+  size_t events_done_ = 0;  // events already published
   ros::Subscriber ack_sub_;
   std::set<std::string> lockstep_waiting_;  // participants that have not answered the current round
   uint64_t lockstep_round_step_ = 0;
   int lockstep_round_phase_ = -1;
   uint64_t lockstep_rounds_ = 0, lockstep_timeouts_ = 0;
   std::map<std::string, uint64_t> cmds_received_;    // per cmd topic
-  std::map<std::string, ros::WallTime> last_hello_;  // lockstep start-up: when each participant last asked //
-                                                     // markers: where each ship has been
+  std::map<std::string, ros::WallTime> last_hello_;  // lockstep start-up: when each participant last asked
+  uint64_t lockstep_rejected_ = 0;                   // requests to join with no name or phase 0
 };
 
 }  // namespace asv_sim

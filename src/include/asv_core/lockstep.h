@@ -30,8 +30,10 @@ struct LockstepInput {
 class LockstepCoordinator {
 public:
   // A participant asks to join (or, restarted, to join again): admitted at the next step's phase 0.
-  // Its earlier output counts stay in the totals (the subscribers received those messages).
-  void hello(const std::string& node, int phase, const std::vector<LockstepInput>& inputs);
+  // Its earlier output counts stay in the totals (the subscribers received those messages). Refused
+  // (false, nothing changes) without a node name or with a phase below 1: phase 0 is the admission
+  // round itself, and a participant in it would be admitted again at every step.
+  bool hello(const std::string& node, int phase, const std::vector<LockstepInput>& inputs);
   // Participants waiting for admission, sorted by name.
   std::vector<std::string> pendingAdmissions() const;
   // A participant acknowledged its admission: it now counts its inputs from the current totals.
