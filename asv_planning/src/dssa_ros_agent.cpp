@@ -6,7 +6,7 @@
 #include <set>
 #include <stdexcept>
 
-#include <asv_core/units.h>
+#include <asv_core/common/units.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
 #include <asv_ros/params.h>

@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include <asv_core/scenario.h>
+#include <asv_core/sim/scenario.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
 #include <asv_ros/params.h>

@@ -1,7 +1,7 @@
-#include <asv_core/aco_planner.h>
-#include <asv_core/dssa.h>
-#include <asv_core/ga_planner.h>
-#include <asv_core/mopso_planner.h>
+#include <asv_core/planning/aco/aco_planner.h>
+#include <asv_core/planning/dssa/dssa.h>
+#include <asv_core/planning/ga/ga_planner.h>
+#include <asv_core/planning/mopso/mopso_planner.h>
 #include <pluginlib/class_list_macros.hpp>
 
 #include "asv_planning/algorithm_plugin.h"

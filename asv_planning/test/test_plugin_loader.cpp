@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include <asv_core/units.h>
+#include <asv_core/common/units.h>
 
 #include "asv_planning/plugin_loader.h"
 

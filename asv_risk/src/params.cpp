@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "asv_core/scenario.h"
+#include "asv_core/sim/scenario.h"
 
 namespace asv_risk {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <set>
 
-#include <asv_core/units.h>
+#include <asv_core/common/units.h>
 
 #include "asv_risk/params.h"
 #include "asv_risk/target_quality.h"

@@ -25,8 +25,8 @@
 #include <thread>
 #include <vector>
 
-#include <asv_core/ais.h>
-#include <asv_core/nmea_encode.h>
+#include <asv_core/codec/ais.h>
+#include <asv_core/codec/nmea_encode.h>
 #include <asv_msgs/TargetArray.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/network.h>

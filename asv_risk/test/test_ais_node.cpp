@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
-#include <asv_core/ais.h>
-#include <asv_core/geodesy.h>
-#include <asv_core/nmea_encode.h>
+#include <asv_core/codec/ais.h>
+#include <asv_core/codec/nmea_encode.h>
+#include <asv_core/common/geodesy.h>
 #include <asv_msgs/NmeaSentence.h>
 #include <asv_msgs/TargetArray.h>
 #include <ros/ros.h>

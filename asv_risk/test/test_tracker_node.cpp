@@ -14,7 +14,7 @@
 #include <cmath>
 #include <optional>
 
-#include <asv_core/nmea_encode.h>
+#include <asv_core/codec/nmea_encode.h>
 #include <asv_msgs/NmeaSentence.h>
 #include <asv_msgs/TargetArray.h>
 #include <nav_msgs/Odometry.h>

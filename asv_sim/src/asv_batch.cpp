@@ -24,12 +24,12 @@
 #include <utility>
 #include <vector>
 
-#include <asv_core/dssa.h>
-#include <asv_core/evaluation.h>
-#include <asv_core/plan_follower.h>
-#include <asv_core/risk_assessment.h>
-#include <asv_core/scenario.h>
-#include <asv_core/simulation.h>
+#include <asv_core/eval/evaluation.h>
+#include <asv_core/planning/dssa/dssa.h>
+#include <asv_core/planning/plan_follower.h>
+#include <asv_core/risk/risk_assessment.h>
+#include <asv_core/sim/scenario.h>
+#include <asv_core/sim/simulation.h>
 #include <asv_planning/plugin_loader.h>
 
 namespace {

@@ -172,7 +172,9 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
       const std::string ship = v.name, topic = nh_.resolveName(ship + "/cmd");
       cmd_subs_.push_back(nh_.subscribe<asv_msgs::CourseSpeedSetpoint>(
           topic, 10,
-          [this, ship, topic](const asv_msgs::CourseSpeedSetpoint::ConstPtr& m) { cmdCallback(ship, topic, m); },
+          [this, ship, topic](const asv_msgs::CourseSpeedSetpoint::ConstPtr& m) {
+            cmdCallback(ship, topic, m);
+          },
           ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay()));
     }
   }
@@ -530,8 +532,9 @@ void SimNode::lockstepAckCallback(const asv_msgs::LockstepAck::ConstPtr& msg) {
       inputs.push_back({msg->inputs[i], i < msg->triggers.size() && msg->triggers[i]});
     if (!lockstep_.hello(msg->node, msg->phase, inputs)) {
       ++lockstep_rejected_;
-      ROS_ERROR_THROTTLE(5.0, "sim_node: lockstep: refused '%s' asking to join phase %d (a participant "
-                              "has a name and a phase of 1 or more; phase 0 is admission)",
+      ROS_ERROR_THROTTLE(5.0,
+                         "sim_node: lockstep: refused '%s' asking to join phase %d (a participant "
+                         "has a name and a phase of 1 or more; phase 0 is admission)",
                          msg->node.c_str(), static_cast<int>(msg->phase));
       return;
     }

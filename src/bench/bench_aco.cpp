@@ -3,8 +3,8 @@
 // one core; the paper's MATLAB means were 15.69 s and 26.93 s (Intel Core i5 M430).
 #include <benchmark/benchmark.h>
 
-#include "asv_core/aco_planner.h"
-#include "asv_core/lazarowska_scenarios.h"
+#include "asv_core/papers/lazarowska_scenarios.h"
+#include "asv_core/planning/aco/aco_planner.h"
 
 namespace {
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "asv_core/ais.h"
-#include "asv_core/arpa.h"
-#include "asv_core/nmea.h"
+#include "asv_core/codec/ais.h"
+#include "asv_core/codec/arpa.h"
+#include "asv_core/codec/nmea.h"
 
 namespace {
 

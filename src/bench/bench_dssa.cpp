@@ -5,8 +5,8 @@
 #include <random>
 #include <vector>
 
-#include "asv_core/dssa.h"
-#include "asv_core/dssa_experiments.h"
+#include "asv_core/papers/dssa_experiments.h"
+#include "asv_core/planning/dssa/dssa.h"
 
 namespace {
 

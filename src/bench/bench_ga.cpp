@@ -2,8 +2,8 @@
 // population 150 x 150 generations (section 4). Goal: median <= 10 ms on one core.
 #include <benchmark/benchmark.h>
 
-#include "asv_core/ga_planner.h"
-#include "asv_core/wu_scenarios.h"
+#include "asv_core/papers/wu_scenarios.h"
+#include "asv_core/planning/ga/ga_planner.h"
 
 namespace {
 

@@ -2,8 +2,8 @@
 // targets and a static one, 50 particles x 40 generations. Goal: median <= 5 ms on one core.
 #include <benchmark/benchmark.h>
 
-#include "asv_core/hu_scenarios.h"
-#include "asv_core/mopso_planner.h"
+#include "asv_core/papers/hu_scenarios.h"
+#include "asv_core/planning/mopso/mopso_planner.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "asv_core/risk_assessment.h"
+#include "asv_core/risk/risk_assessment.h"
 
 namespace {
 

@@ -5,8 +5,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "asv_core/autopilot.h"
-#include "asv_core/vessel_model.h"
+#include "asv_core/sim/autopilot.h"
+#include "asv_core/sim/vessel_model.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // CMake; build and run from the repository root with:
 //
 //   clang++ -std=c++17 -fsanitize=fuzzer,address,undefined -I src/include -I /usr/include/eigen3
-//   src/fuzz/fuzz_nmea.cpp src/lib/nmea.cpp src/lib/ais.cpp src/lib/arpa.cpp
+//   src/fuzz/fuzz_nmea.cpp src/lib/codec/nmea.cpp src/lib/codec/ais.cpp src/lib/codec/arpa.cpp
 //   ./a.out -max_total_time=20
 //
 // (a seed corpus helps: `mkdir corpus; cp ../shared/data/ais/libais/*.nmea corpus/; ./a.out corpus ...`)
@@ -14,9 +14,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include "asv_core/ais.h"
-#include "asv_core/arpa.h"
-#include "asv_core/nmea.h"
+#include "asv_core/codec/ais.h"
+#include "asv_core/codec/arpa.h"
+#include "asv_core/codec/nmea.h"
 
 namespace {
 

@@ -3,9 +3,9 @@
 // 2.5 KB), or by hand from the repository root:
 //
 //   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -I src/include -I /usr/include/eigen3
-//   src/fuzz/fuzz_scenario.cpp src/lib/scenario.cpp src/lib/geodesy.cpp src/lib/param_map.cpp
-//   src/lib/domain.cpp -lyaml-cpp -lGeographicLib -o fuzz_scenario
-//   mkdir -p corpus && cp asv_bringup/scenarios/*.yaml corpus/
+//   src/fuzz/fuzz_scenario.cpp src/lib/sim/scenario.cpp src/lib/common/geodesy.cpp
+//   src/lib/common/param_map.cpp src/lib/risk/domain.cpp -lyaml-cpp -lGeographicLib -o fuzz_scenario mkdir -p
+//   corpus && cp asv_bringup/scenarios/*.yaml corpus/
 //   ./fuzz_scenario corpus -dict=src/fuzz/scenario.dict -max_total_time=20
 //
 // Contract checked: any input either yields a Scenario or throws asv::ScenarioError with a message, as
@@ -20,8 +20,8 @@
 #include <set>
 #include <string>
 
-#include "asv_core/geodesy.h"
-#include "asv_core/scenario.h"
+#include "asv_core/common/geodesy.h"
+#include "asv_core/sim/scenario.h"
 
 namespace {
 

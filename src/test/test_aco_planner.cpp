@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <string>
 
-#include "asv_core/aco_planner.h"
-#include "asv_core/lazarowska_scenarios.h"
+#include "asv_core/papers/lazarowska_scenarios.h"
+#include "asv_core/planning/aco/aco_planner.h"
 
 using namespace asv;
 

@@ -13,8 +13,8 @@
 #include <new>
 #include <string>
 
-#include "asv_core/ais.h"
-#include "asv_core/units.h"
+#include "asv_core/codec/ais.h"
+#include "asv_core/common/units.h"
 
 // Counts heap allocations, to check that decoding a type 1 sentence allocates nothing. malloc/free
 // behind a replaced global operator new/delete is legitimate; GCC's heuristic flags it anyway.

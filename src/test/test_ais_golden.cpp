@@ -26,8 +26,8 @@
 #include <utility>
 #include <vector>
 
-#include "asv_core/ais.h"
-#include "asv_core/nmea.h"
+#include "asv_core/codec/ais.h"
+#include "asv_core/codec/nmea.h"
 
 using namespace asv;
 using namespace asv::ais;

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <string>
 
-#include "asv_core/arpa.h"
-#include "asv_core/units.h"
+#include "asv_core/codec/arpa.h"
+#include "asv_core/common/units.h"
 
 using namespace asv;
 using namespace asv::arpa;

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "asv_core/autopilot.h"
+#include "asv_core/sim/autopilot.h"
 
 using namespace asv;
 

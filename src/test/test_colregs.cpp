@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/colregs.h"
+#include "asv_core/risk/colregs.h"
 
 using namespace asv;
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/cpa.h"
+#include "asv_core/risk/cpa.h"
 
 using namespace asv;
 

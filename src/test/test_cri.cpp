@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/cri.h"
+#include "asv_core/risk/cri.h"
 
 using namespace asv;
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/domain.h"
+#include "asv_core/risk/domain.h"
 
 using namespace asv;
 

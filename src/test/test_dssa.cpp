@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "asv_core/cpa.h"
-#include "asv_core/dssa.h"
-#include "asv_core/dssa_experiments.h"
+#include "asv_core/papers/dssa_experiments.h"
+#include "asv_core/planning/dssa/dssa.h"
+#include "asv_core/risk/cpa.h"
 
 namespace asv {
 namespace {

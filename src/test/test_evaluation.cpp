@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <map>
 
-#include "asv_core/evaluation.h"
+#include "asv_core/eval/evaluation.h"
 
 using namespace asv;
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "asv_core/ga_planner.h"
-#include "asv_core/wu_scenarios.h"
+#include "asv_core/papers/wu_scenarios.h"
+#include "asv_core/planning/ga/ga_planner.h"
 
 using namespace asv;
 

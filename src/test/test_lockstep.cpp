@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/lockstep.h"
+#include "asv_core/sim/lockstep.h"
 
 using asv::LockstepCoordinator;
 using Names = std::vector<std::string>;

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <map>
 
-#include "asv_core/hu_scenarios.h"
-#include "asv_core/mopso_planner.h"
+#include "asv_core/papers/hu_scenarios.h"
+#include "asv_core/planning/mopso/mopso_planner.h"
 
 using namespace asv;
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "asv_core/nmea.h"
+#include "asv_core/codec/nmea.h"
 
 using namespace asv::nmea;
 

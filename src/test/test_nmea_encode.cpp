@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <fstream>
 
-#include "asv_core/arpa.h"
-#include "asv_core/nmea.h"
-#include "asv_core/nmea_encode.h"
-#include "asv_core/units.h"
+#include "asv_core/codec/arpa.h"
+#include "asv_core/codec/nmea.h"
+#include "asv_core/codec/nmea_encode.h"
+#include "asv_core/common/units.h"
 
 using namespace asv;
 

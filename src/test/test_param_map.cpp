@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/param_map.h"
+#include "asv_core/common/param_map.h"
 
 using asv::ParamMap;
 

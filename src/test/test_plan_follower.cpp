@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "asv_core/dssa.h"
-#include "asv_core/plan_follower.h"
-#include "asv_core/units.h"
+#include "asv_core/common/units.h"
+#include "asv_core/planning/dssa/dssa.h"
+#include "asv_core/planning/plan_follower.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/risk_assessment.h"
+#include "asv_core/risk/risk_assessment.h"
 
 using namespace asv;
 

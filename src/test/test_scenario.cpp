@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/scenario.h"
+#include "asv_core/sim/scenario.h"
 
 using namespace asv;
 
@@ -157,9 +157,9 @@ TEST(ScenarioFuzzRegression, HostileValuesAreScenarioErrors) {
                       "planner_params:\n  aco: &p\n    ants: 10\n    again: *p\n"),
               "nested deeper than 8 levels");
   // Eight levels are accepted: the limit is on nesting, not on a plugin's ordinary keys.
-  const Scenario deep = parseScenario(
-      replace(kGood, "planner_params: {aco: {ants: 10, rho: 0.1}, seed_note: x}\n",
-              "planner_params: {a: {b: {c: {d: {e: {f: {g: {h: 1}}}}}}}}\n"),
-      "test.yaml");
+  const Scenario deep =
+      parseScenario(replace(kGood, "planner_params: {aco: {ants: 10, rho: 0.1}, seed_note: x}\n",
+                            "planner_params: {a: {b: {c: {d: {e: {f: {g: {h: 1}}}}}}}}\n"),
+                    "test.yaml");
   EXPECT_EQ(deep.planner_params.getDouble("a/b/c/d/e/f/g/h", 0.0), 1.0);
 }

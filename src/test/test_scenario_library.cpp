@@ -14,19 +14,19 @@
 #include <string>
 #include <vector>
 
-#include "asv_core/aco_planner.h"
-#include "asv_core/colregs.h"
-#include "asv_core/cpa.h"
-#include "asv_core/domain.h"
-#include "asv_core/dssa.h"
-#include "asv_core/dssa_experiments.h"
-#include "asv_core/ga_planner.h"
-#include "asv_core/hu_scenarios.h"
-#include "asv_core/lazarowska_scenarios.h"
-#include "asv_core/mopso_planner.h"
-#include "asv_core/scenario.h"
-#include "asv_core/simulation.h"
-#include "asv_core/wu_scenarios.h"
+#include "asv_core/papers/dssa_experiments.h"
+#include "asv_core/papers/hu_scenarios.h"
+#include "asv_core/papers/lazarowska_scenarios.h"
+#include "asv_core/papers/wu_scenarios.h"
+#include "asv_core/planning/aco/aco_planner.h"
+#include "asv_core/planning/dssa/dssa.h"
+#include "asv_core/planning/ga/ga_planner.h"
+#include "asv_core/planning/mopso/mopso_planner.h"
+#include "asv_core/risk/colregs.h"
+#include "asv_core/risk/cpa.h"
+#include "asv_core/risk/domain.h"
+#include "asv_core/sim/scenario.h"
+#include "asv_core/sim/simulation.h"
 
 using namespace asv;
 namespace fs = std::filesystem;

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include "asv_core/ais.h"
-#include "asv_core/arpa.h"
-#include "asv_core/nmea.h"
-#include "asv_core/simulation.h"
+#include "asv_core/codec/ais.h"
+#include "asv_core/codec/arpa.h"
+#include "asv_core/codec/nmea.h"
+#include "asv_core/sim/simulation.h"
 
 using namespace asv;
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "asv_core/clock_jump.h"
-#include "asv_core/tracker.h"
+#include "asv_core/common/clock_jump.h"
+#include "asv_core/tracking/tracker.h"
 
 namespace {
 

@@ -2,8 +2,8 @@
 
 #include <GeographicLib/Geodesic.hpp>
 
-#include "asv_core/geodesy.h"
-#include "asv_core/units.h"
+#include "asv_core/common/geodesy.h"
+#include "asv_core/common/units.h"
 
 using namespace asv;
 

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "asv_core/vessel_model.h"
+#include "asv_core/sim/vessel_model.h"
 
 using namespace asv;
 

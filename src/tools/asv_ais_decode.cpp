@@ -25,8 +25,8 @@
 #include <string_view>
 #include <vector>
 
-#include "asv_core/ais.h"
-#include "asv_core/nmea.h"
+#include "asv_core/codec/ais.h"
+#include "asv_core/codec/nmea.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "asv_core/dssa_experiments.h"
+#include "asv_core/papers/dssa_experiments.h"
 
 namespace {
 

@@ -49,7 +49,7 @@
 #include <thread>
 #include <utility>
 
-#include <asv_core/dssa.h>
+#include <asv_core/planning/dssa/dssa.h>
 #include <asv_msgs/Intention.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nav_msgs/Odometry.h>

@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include <asv_core/types.h>
-#include <asv_core/units.h>
+#include <asv_core/common/types.h>
+#include <asv_core/common/units.h>
 #include <nav_msgs/Odometry.h>
 #include <tf2/utils.h>
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include <asv_core/param_map.h>
+#include <asv_core/common/param_map.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
 namespace asv_planning {

@@ -12,9 +12,9 @@
 #include <optional>
 #include <string>
 
-#include <asv_core/clock_jump.h>
-#include <asv_core/plan_follower.h>
-#include <asv_core/planning.h>
+#include <asv_core/common/clock_jump.h>
+#include <asv_core/planning/plan_follower.h>
+#include <asv_core/planning/planning.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
@@ -88,7 +88,7 @@ private:
   double first_input_ = -1.0;  // [s] ROS time of the first odometry (-1: none yet)
   asv_msgs::RiskAssessment::ConstPtr risk_;
   asv_msgs::TargetArray::ConstPtr targets_;
-  // Replanning policy and plan-to-set-point logic, shared with asv_batch (asv_core/plan_follower.h).
+  // Replanning policy and plan-to-set-point logic, shared with asv_batch (asv_core/planning/plan_follower.h).
   std::unique_ptr<asv::PlanFollower> follower_;
   asv::PlanFollowerConfig follower_config_;
   asv::ClockJumpDetector clock_;

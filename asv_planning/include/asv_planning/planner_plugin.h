@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include <asv_core/param_map.h>
-#include <asv_core/planning.h>
+#include <asv_core/common/param_map.h>
+#include <asv_core/planning/planning.h>
 
 namespace asv_planning {
 

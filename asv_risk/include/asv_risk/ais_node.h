@@ -13,9 +13,9 @@
 #include <string>
 #include <unordered_map>
 
-#include <asv_core/ais.h>
-#include <asv_core/clock_jump.h>
-#include <asv_core/geodesy.h>
+#include <asv_core/codec/ais.h>
+#include <asv_core/common/clock_jump.h>
+#include <asv_core/common/geodesy.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>

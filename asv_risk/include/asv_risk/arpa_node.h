@@ -18,9 +18,9 @@
 #include <memory>
 #include <string>
 
-#include <asv_core/arpa.h>
-#include <asv_core/clock_jump.h>
-#include <asv_core/geodesy.h>
+#include <asv_core/codec/arpa.h>
+#include <asv_core/common/clock_jump.h>
+#include <asv_core/common/geodesy.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include <asv_core/risk_assessment.h>
+#include <asv_core/risk/risk_assessment.h>
 #include <asv_msgs/Target.h>
 #include <asv_msgs/TargetRisk.h>
 #include <nav_msgs/Odometry.h>

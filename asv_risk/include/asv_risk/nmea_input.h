@@ -23,7 +23,7 @@
 
 #include <asv_ros/lockstep.h>
 
-#include <asv_core/nmea.h>
+#include <asv_core/codec/nmea.h>
 #include <asv_msgs/NmeaSentence.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>

@@ -10,8 +10,8 @@
 #include <optional>
 #include <string>
 
-#include <asv_core/clock_jump.h>
-#include <asv_core/risk_assessment.h>
+#include <asv_core/common/clock_jump.h>
+#include <asv_core/risk/risk_assessment.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>

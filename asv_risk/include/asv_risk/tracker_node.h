@@ -1,4 +1,4 @@
-// tracker: fuses the AIS and ARPA targets into one track per ship (asv::Tracker, asv_core/tracker.h:
+// tracker: fuses the AIS and ARPA targets into one track per ship (asv::Tracker, asv_core/tracking/tracker.h:
 // association rule and ages documented there and in config/tracker.yaml), dead-reckons the tracks and
 // publishes them at a fixed rate with their age, source (AIS/ARPA/FUSED) and quality.
 //
@@ -11,8 +11,8 @@
 #include <map>
 #include <string>
 
-#include <asv_core/clock_jump.h>
-#include <asv_core/tracker.h>
+#include <asv_core/common/clock_jump.h>
+#include <asv_core/tracking/tracker.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>

@@ -2,7 +2,7 @@
 //
 // When the global parameter /lockstep is true (scenario.launch lockstep:=true, with /use_sim_time),
 // sim_node advances the simulation one step only when every participant has done that step's work
-// (asv_core/lockstep.h has the rule and asv_msgs/LockstepStep the protocol). A node takes part through
+// (asv_core/sim/lockstep.h has the rule and asv_msgs/LockstepStep the protocol). A node takes part through
 // this class, which replaces three ROS calls:
 //  - subscribe(): in lockstep a message is held, and handed to the callback at the node's step, once
 //    every message published so far on each input has arrived: inputs in the order they were

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include <asv_core/clock_jump.h>
-#include <asv_core/evaluation.h>
-#include <asv_core/scenario.h>
+#include <asv_core/common/clock_jump.h>
+#include <asv_core/eval/evaluation.h>
+#include <asv_core/sim/scenario.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
 #include <asv_msgs/SimEvent.h>

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include <asv_core/lockstep.h>
-#include <asv_core/simulation.h>
+#include <asv_core/sim/lockstep.h>
+#include <asv_core/sim/simulation.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/LockstepAck.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -54,7 +54,7 @@ struct SimNodeParams {
   double keep_up_lead = 2.0;     // [s, sim]
   double keep_up_timeout = 1.0;  // [s, wall]
   // Lockstep (global parameter /lockstep): the simulation advances a step only when every participant
-  // has done that step's work (asv_core/lockstep.h); rate, start_delay and keep_up_* do not apply.
+  // has done that step's work (asv_core/sim/lockstep.h); rate, start_delay and keep_up_* do not apply.
   bool lockstep = false;
   double lockstep_timeout = 30.0;                  // [s, wall] global /lockstep_timeout
   std::vector<std::string> lockstep_participants;  // node names the first step waits for
@@ -122,8 +122,8 @@ private:
   std::map<size_t, std::vector<geometry_msgs::Point>> trails_;  // markers: where each ship has been
   asv::LockstepCoordinator lockstep_;
   std::map<int, ros::Publisher> step_pubs_;  // per phase (asv_ros::lockstepStepTopic)
-  uint64_t clock_step_ = 0;  // the lockstep step whose time /clock last carried
-  size_t events_done_ = 0;  // events already published
+  uint64_t clock_step_ = 0;                  // the lockstep step whose time /clock last carried
+  size_t events_done_ = 0;                   // events already published
   ros::Subscriber ack_sub_;
   std::set<std::string> lockstep_waiting_;  // participants that have not answered the current round
   uint64_t lockstep_round_step_ = 0;

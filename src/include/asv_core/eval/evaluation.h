@@ -1,0 +1,242 @@
+// Run evaluation: the metrics and the COLREGs score of one run, and its JSON (ARCHITECTURE.md
+// section 6). asv_batch (in-process) and evaluator_node (over ROS topics) feed the same RunRecorder,
+// so both write the same result for the same trajectories.
+//
+// The COLREGs score follows the structure of Woerner, Benjamin, Novitzky & Leonard (2019),
+// "Quantifying protocol evaluation for autonomous collision avoidance", Autonomous Robots 43:967-991:
+// a safety score from the range at CPA with preferred, minimum and near-miss ranges (piecewise), times
+// rule penalties for Rule 8 (alteration readily apparent), Rules 13-16 (give-way acts early, turns to
+// starboard in head-on and crossing encounters, does not cross ahead of the stand-on ship) and Rule 17
+// (stand-on keeps course and speed until the give-way ship's action is clearly lacking). The paper's
+// notional algorithms leave every threshold to the evaluator; ours are the fields of EvaluationConfig
+// and docs/evaluation.md gives every formula.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "asv_core/common/param_map.h"
+#include "asv_core/common/types.h"
+#include "asv_core/risk/colregs.h"
+#include "asv_core/risk/risk_level.h"
+#include "asv_core/sim/simulation.h"
+
+namespace asv {
+
+struct EvaluationConfig {
+  // Safety score of a target from the smallest range to it (Woerner's range at CPA): 1 at or beyond
+  // r_pref, falling linearly to safety_at_r_min at r_min, then linearly to 0 at r_nm (near miss), 0
+  // below; 0 for a collision.
+  // true: r_min = the scenario's safety.min_separation_m, r_pref = 2 r_min, r_nm = r_min / 5 (the
+  // defaults below are exactly that for the default 0.5 nm); false: the three values below.
+  bool ranges_from_scenario = true;
+  double r_pref_m = 1852.0;      // [m] preferred passing range (1 nm)
+  double r_min_m = 926.0;        // [m] minimum acceptable passing range (0.5 nm)
+  double r_nm_m = 185.2;         // [m] near-miss range (0.1 nm)
+  double safety_at_r_min = 0.5;  // [-] safety score at r_min, in (0, 1)
+
+  // Entry criterion: the rules of a target are evaluated from the first instant at which a risk of
+  // collision exists on the ships' actual motion: 0 < TCPA <= entry_tcpa_s and DCPA < entry_dcpa_m.
+  double entry_tcpa_s = 1800.0;  // [s] 30 min
+  double entry_dcpa_m = 1852.0;  // [m] 1 nm (Hu's d_min)
+
+  // An "action": the own course over ground differs from its course at entry by at least
+  // action_course_deg, or its speed has fallen by at least action_speed_fraction of the entry speed.
+  double action_course_deg = 5.0;      // [deg]
+  double action_speed_fraction = 0.2;  // [-]
+  // Rule 8(b): an alteration is readily apparent when the largest course change reaches
+  // apparent_course_deg, or the speed falls by apparent_speed_fraction (the equivalent speed change).
+  double apparent_course_deg = 30.0;     // [deg]
+  double apparent_speed_fraction = 0.5;  // [-]
+  // Rule 16 (and 8(a), "in ample time"): the give-way ship's first action is early when, just before
+  // it, the range was at least early_range_m or the TCPA at least early_tcpa_s.
+  double early_range_m = 3704.0;  // [m] 2 nm
+  double early_tcpa_s = 480.0;    // [s] 8 min
+  // Rule 15: crossing the stand-on ship's track ahead of it, closer than this, is "crossing ahead".
+  double cross_ahead_range_m = 3704.0;  // [m] 2 nm
+  // Rule 17: the give-way ship's action is "clearly lacking" once the target is urgent (Hu et al. 2017
+  // risk level 2: 0 <= TCPA <= t_safe and DCPA < d_safe), which is also when Hu's Algorithm 1 flags a
+  // target that went from risk 1 straight to 2.
+  HuRiskConfig hu;
+
+  // Penalties (fractions of the target's score removed; the score is safety x prod(1 - p)).
+  double penalty_rule8 = 0.3;     // x (1 - alteration / apparent): not readily apparent
+  double penalty_late = 0.3;      // x lateness in [0, 1]; full penalty when no action at all
+  double penalty_port = 0.5;      // Rule 14/15 (and 17(c)): the dominant turn was to port
+  double penalty_ahead = 0.5;     // Rule 15: crossed ahead of the stand-on ship
+  double penalty_stand_on = 0.5;  // Rule 17: the stand-on ship acted before it was allowed to
+
+  // Manoeuvres: a course set-point change of at least manoeuvre_threshold_deg from the last settled
+  // set-point; later changes within manoeuvre_window_s of its start belong to the same manoeuvre.
+  double manoeuvre_threshold_deg = 5.0;  // [deg]
+  double manoeuvre_window_s = 30.0;      // [s]
+
+  // Trajectories are kept at this period for the rule checks (minimum distances use every sample).
+  double sample_period_s = 1.0;  // [s] 0: keep every sample
+
+  ColregsConfig colregs;  // encounter classification (as risk_node)
+
+  // Throws std::invalid_argument naming the first bad field.
+  void validate() const;
+  // Keys: the field names above (hu/t_safe_s, hu/d_safe_m, hu/t_max_s, hu/d_min_m,
+  // colregs/head_on_half_angle_deg, colregs/stern_sector_start_deg, colregs/max_range_m); unknown keys
+  // are rejected; the result is validated.
+  static EvaluationConfig fromParams(const ParamMap& params);
+};
+
+// What the recorder is told about the run before it starts.
+struct RunInfo {
+  std::string scenario;
+  std::string planner;  // the own ship's planner short name, "none" without one
+  uint64_t seed = 0;
+  double min_separation = 926.0;  // [m] the scenario's safety.min_separation_m
+  bool multi_agent = false;       // write "ships": every ship that plans gets an entry
+  struct Ship {
+    std::string name;
+    std::optional<Eigen::Vector2d> goal;  // [m] ENU
+    std::string planner;                  // "" for traffic without a planner
+  };
+  std::vector<Ship> ships;  // ships[0] is the own ship; every sample lists ships by these names
+
+  // From a scenario: the own ship first, then the targets in file order.
+  static RunInfo fromScenario(const Scenario& scenario, const std::string& planner, uint64_t seed);
+};
+
+// One ship at one instant.
+struct ShipSample {
+  std::string name;
+  ShipState state;  // position, course and speed over ground, heading
+  double course_setpoint = std::numeric_limits<double>::quiet_NaN();  // [rad]; NaN when unknown
+  bool active = true;  // false once the ship has arrived and left the scenario
+};
+
+struct Manoeuvre {
+  double time = 0.0;           // [s] when the set-point first changed
+  double course_change = 0.0;  // [rad] positive to starboard
+};
+
+struct TargetResult {
+  std::string name;
+  Encounter encounter = Encounter::None;
+  OwnRole role = OwnRole::None;
+  double min_distance = std::numeric_limits<double>::quiet_NaN();   // [m]
+  double tcpa_at_start = std::numeric_limits<double>::quiet_NaN();  // [s]
+  double dcpa_at_start = std::numeric_limits<double>::quiet_NaN();  // [m]
+  bool evaluated = false;  // the entry criterion was met: the rules were checked
+  bool collision = false;
+  double safety = 1.0;  // [0, 1]
+  double score = 1.0;   // [0, 1] safety x prod(1 - penalties)
+  bool colregs_ok = true;
+  std::vector<std::string> notes;
+};
+
+// One ship's view of the run (the own ship's fills the top level; multi-agent runs list every
+// planning ship under "ships").
+struct ShipResult {
+  std::string name;
+  std::string planner;
+  bool collision = false;
+  double min_separation = std::numeric_limits<double>::quiet_NaN();  // [m] to any other ship
+  bool arrived = false;
+  double time_to_goal = std::numeric_limits<double>::quiet_NaN();  // [s]
+  double path_length = 0.0;                                        // [m]
+  double path_ratio = std::numeric_limits<double>::quiet_NaN();    // [-] only when arrived
+  std::vector<Manoeuvre> manoeuvres;
+  std::vector<TargetResult> targets;
+  double colregs_score = 1.0;
+};
+
+struct RunResult {
+  std::string scenario, planner;
+  uint64_t seed = 0;
+  ShipResult own;
+  bool collision = false;  // any two ships of the run collided
+  bool safety_violation = false;
+  struct PlanTime {
+    double median_ms = std::numeric_limits<double>::quiet_NaN();
+    double max_ms = std::numeric_limits<double>::quiet_NaN();
+    long count = 0;
+  } plan_time;
+  double wall_time = 0.0;  // [s]
+  bool multi_agent = false;
+  std::vector<ShipResult> ships;
+};
+
+// Safety score of a passing range r (see EvaluationConfig).
+double safetyScore(double r, double r_pref, double r_min, double r_nm, double at_r_min);
+
+class RunRecorder {
+public:
+  // Throws std::invalid_argument for a bad config or a RunInfo without ships.
+  RunRecorder(const EvaluationConfig& config, const RunInfo& info);
+
+  // A sample of every ship at time t (increasing). Ships are matched by name; unknown names and
+  // missing ships are ignored (a ship may appear late or be absent from a message).
+  void addSample(double t, const std::vector<ShipSample>& ships);
+  // A course set-point of one ship (e.g. a <ship>/cmd message between samples). Samples carrying a
+  // set-point feed the same series.
+  void addSetpoint(double t, const std::string& ship, double course);
+  // Wall time of one plan of the own ship [s] (plan_time_ms).
+  void addPlanTime(double seconds);
+  void addEvent(const SimEvent& event);
+  void setWallTime(double seconds) { wall_time_ = seconds; }
+
+  size_t sampleCount() const { return samples_; }
+  double lastTime() const { return last_t_; }
+  // Evaluates everything recorded so far.
+  RunResult finish() const;
+
+private:
+  struct Point {
+    double t;
+    ShipState s;
+    bool active;
+  };
+  struct Track {
+    std::vector<Point> points;  // thinned to sample_period_s
+    double last_kept = -1e300;
+    bool have_first = false;
+    Eigen::Vector2d first_pos = Eigen::Vector2d::Zero();
+    Eigen::Vector2d last_pos = Eigen::Vector2d::Zero();
+    bool have_last = false;
+    double path_length = 0.0;
+    std::vector<std::pair<double, double>> setpoints;  // (t, course) on change
+  };
+  int index(const std::string& name) const;
+  ShipResult evaluateShip(size_t i) const;
+  TargetResult evaluatePair(size_t i, size_t j) const;
+  std::vector<Manoeuvre> manoeuvres(const Track& tr) const;
+
+  EvaluationConfig cfg_;
+  RunInfo info_;
+  double r_pref_, r_min_, r_nm_;
+  std::vector<Track> tracks_;
+  std::vector<std::vector<double>> min_dist_;  // pairwise, while both active
+  std::vector<std::vector<char>> collided_;    // pairwise collision events
+  std::vector<double> arrival_;                // arrival time per ship (NaN: none)
+  std::vector<double> plan_times_;
+  bool any_collision_ = false;
+  double wall_time_ = 0.0;
+  double last_t_ = -1e300;
+  size_t samples_ = 0;
+};
+
+// Deterministic JSON (fixed key order, fixed precision, null for NaN/inf). pretty: indented over
+// several lines (evaluator_node's file); otherwise one line (JSON Lines).
+std::string toJson(const RunResult& result, bool pretty = false);
+// The same result without its wall-clock keys' values: wall_time_s and plan_time_ms median/max are 0
+// (count is kept). For determinism checks and --deterministic.
+void zeroWallClock(RunResult& result);
+// A short human summary (one line) and a per-target table (several lines) for logs.
+std::string summaryLine(const RunResult& result);
+std::string summaryTable(const RunResult& result);
+// Shared names at the JSON edge.
+const char* encounterName(Encounter e);  // head_on | crossing | overtaking | being_overtaken | none
+const char* roleName(OwnRole r);         // give_way | stand_on | none (head-on: give_way)
+
+}  // namespace asv

@@ -1,0 +1,114 @@
+// The replanning policy and the plan-to-set-point logic of planner_node, free of ROS, so that
+// planner_node (over topics) and asv_batch (in-process) replan and steer the same way:
+//  - replan on the first plan, when a target's Hu risk level rises above what the last plan saw, when
+//    the rest of the plan flown from here would pass a target closer than plan_clearance, and
+//    periodically while the last plan is not Ok; never faster than min_replan_interval;
+//  - a plan that fails (NoSolution or an exception) becomes the fallback: hold course at a fraction of
+//    the speed, or hard to starboard when an urgent target is within extremis_range (Rules 17(b), 2(b));
+//  - set-points steer for the next plan waypoint not yet within waypoint_acceptance, then for the goal.
+// Times are the caller's clock (simulation or ROS time) in seconds.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "asv_core/common/param_map.h"
+#include "asv_core/planning/planning.h"
+
+namespace asv {
+
+// Field names and defaults are planner_node's parameters (asv_planning/config/planner_node.yaml).
+struct PlanFollowerConfig {
+  double cruise_speed = 0.0;           // [m/s] 0: the own speed at the first update (at least 0.5 m/s)
+  double replan_period = 30.0;         // [s] replan this often while the last plan is not Ok
+  double min_replan_interval = 2.0;    // [s]
+  double time_budget = 0.5;            // [s] wall time per plan
+  double waypoint_acceptance = 150.0;  // [m]
+  double fallback_speed_factor = 0.5;  // [-] fallback speed = cruise speed x this
+  double extremis_range = 926.0;       // [m]
+  double plan_clearance = 370.4;       // [m]
+  double prediction_horizon = 1200.0;  // [s]
+  int seed = 1;                        // plan k uses seed + k
+  double min_separation = 0.0;         // [m] passing distance the planners must keep (0: their own)
+  bool stand_on_policy = true;         // Rule 17(a)(i): a compliant give-way target below Hu's urgent
+                                       // level is left out of the problem: the own ship stands on
+  double risk_clear_time = 60.0;       // [s] a target's risk must stay none, with its CPA past, this
+                                       // long before a new rise replans again (tracking noise flickers
+                                       // round thresholds; a plan that works lowers the risk)
+  OwnShipLimits limits{10.0, 0.0, 0.0175, 10.0};
+
+  void validate() const;  // throws std::invalid_argument
+  // Keys: the field names; limits as max_speed, min_speed, turn_rate, turn_delay. Unknown keys are
+  // not rejected here (the caller owns the namespace).
+  static PlanFollowerConfig fromParams(const ParamMap& params);
+};
+
+// Rules 14 and 15 for every planner: when the own ship gives way in a head-on or crossing encounter
+// (a target of the problem with that encounter), a plan whose first alteration is more than 5 deg to
+// port is refused and the planner asked again with another seed, up to `retries` times; if none
+// complies, the first plan is returned with a note in its message. Plans without such a target, and
+// fallbacks, pass unchanged. `make` is the planner (it may throw; the exception propagates).
+Plan planObservingGiveWay(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
+                          int retries = 3);
+bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
+
+// Whether a plan may use tracked targets that no risk assessment covers (risk-blind: no encounter, no
+// role, so the own ship could give way to a ship it must stand on for). Only when the risk picture has
+// gone silent: no fresh assessment, and the node has waited stale_after since its first input. Before
+// that, at start-up, tracks reach the planner before their first assessment: they are left out.
+// Times in seconds on one clock; first_input < 0: nothing received yet.
+bool riskBlindPlanning(bool risk_fresh, double now, double first_input, double stale_after);
+
+class PlanFollower {
+public:
+  explicit PlanFollower(const PlanFollowerConfig& config = {});
+
+  void setGoal(const Eigen::Vector2d& goal) {
+    goal_ = goal;
+    have_plan_ = false;  // replan towards the new goal
+  }
+  const std::optional<Eigen::Vector2d>& goal() const { return goal_; }
+  void setObstacles(const std::vector<StaticObstacle>& obstacles) { obstacles_ = obstacles; }
+  // The own ship now (the first call fixes the cruise speed when it is 0).
+  void updateOwn(const ShipState& own);
+  bool hasOwn() const { return own_.has_value(); }
+
+  // The problem for the targets now (each with its risk picture).
+  PlanningProblem buildProblem(double now, const std::vector<PlannerTarget>& targets) const;
+  bool replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why);
+  Plan fallback(const std::vector<PlannerTarget>& targets, const std::string& why) const;
+  // Stores a plan made at `now` (NoSolution becomes the fallback) and the risk levels it saw.
+  // Returns the plan in force.
+  const Plan& acceptPlan(Plan plan, double now, const std::vector<PlannerTarget>& targets,
+                         const std::string& why);
+  // Course and speed to steer now; false while there is no plan (or no own state).
+  bool setpoint(double& course, double& speed);
+
+  bool havePlan() const { return have_plan_; }
+  const Plan& plan() const { return plan_; }
+  uint64_t replans() const { return replans_; }
+  uint64_t fallbacks() const { return fallbacks_; }
+  const PlanFollowerConfig& config() const { return cfg_; }
+  double cruiseSpeed() const { return cfg_.cruise_speed; }
+
+private:
+  double predictedClearance(const std::vector<PlannerTarget>& targets) const;
+
+  PlanFollowerConfig cfg_;
+  std::optional<Eigen::Vector2d> goal_;
+  std::vector<StaticObstacle> obstacles_;
+  std::optional<ShipState> own_;
+  std::map<std::string, RiskLevel> known_levels_;
+  std::map<std::string, double> none_since_;  // when a known target's risk was last seen falling to none
+  Plan plan_;
+  bool have_plan_ = false;
+  size_t wp_index_ = 1;
+  double last_plan_time_ = -1e300;
+  double course_sp_ = 0.0, speed_sp_ = 0.0;
+  uint64_t replans_ = 0, fallbacks_ = 0;
+};
+
+}  // namespace asv

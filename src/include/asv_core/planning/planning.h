@@ -1,0 +1,119 @@
+// What every planner algorithm takes and gives, free of ROS. The asv_planning plugins are thin
+// adapters from these structs to the ROS messages; the batch runner calls the same algorithms.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "asv_core/common/param_map.h"
+#include "asv_core/common/types.h"
+#include "asv_core/risk/colregs.h"
+#include "asv_core/risk/domain.h"
+#include "asv_core/risk/risk_assessment.h"
+#include "asv_core/risk/risk_level.h"
+
+namespace asv {
+
+// A target as the planner sees it: its motion plus the risk picture risk_node computed.
+struct PlannerTarget {
+  ShipState state;
+  RiskLevel risk = RiskLevel::None;       // Hu et al. risk level
+  bool compliant = true;                  // Hu et al. Algorithm 1 flag
+  Encounter encounter = Encounter::None;  // from the own ship's point of view
+  OwnRole role = OwnRole::None;
+  double cri = 0.0;   // Wu et al. CRI
+  double tcpa = 0.0;  // [s]
+  double dcpa = 0.0;  // [m]
+};
+
+struct StaticObstacle {
+  std::string name;
+  Polygon polygon;  // ENU [m], convex or concave, closed implicitly
+};
+
+// The own ship's manoeuvring limits the planners respect.
+struct OwnShipLimits {
+  double max_speed = 10.0;   // [m/s]
+  double min_speed = 0.0;    // [m/s]
+  double turn_rate = 0.02;   // [rad/s] omega of Lazarowska eq. (6): steady rate of turn
+  double turn_delay = 10.0;  // [s] t01 of eq. (6): time before the turn starts
+};
+
+struct PlanningProblem {
+  double time = 0.0;  // [s] scenario (or ROS) time of the problem
+  ShipState own;      // own ship now
+  OwnShipLimits limits;
+  Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // [m] final waypoint (ENU)
+  std::vector<Eigen::Vector2d> route;  // [m] waypoints still to pass before the goal (may be empty)
+  std::vector<PlannerTarget> targets;
+  std::vector<StaticObstacle> obstacles;
+  bool has_bounds = false;  // environment boundaries (Lazarowska eq. 1-3)
+  Eigen::Vector2d bounds_min = Eigen::Vector2d::Zero(), bounds_max = Eigen::Vector2d::Zero();  // [m]
+  uint64_t seed = 1;         // every stochastic planner draws from this seed only
+  double time_budget = 1.0;  // [s] wall time the planner may use; then it returns its best
+  // [m] the passing distance the situation demands (a scenario's safety.min_separation_m); every
+  // planner keeps its own safe distance at least kSeparationMargin times this. 0: the paper's own.
+  double min_separation = 0.0;
+};
+
+// Margin on PlanningProblem::min_separation: plans are made at kinematic constant-velocity prediction,
+// but the ship follows them with turn delays and the targets are tracked with noise. Our choice (10 %).
+constexpr double kSeparationMargin = 1.1;
+
+struct PlannedWaypoint {
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] ENU
+  double time = 0.0;    // [s] planned arrival, relative to PlanningProblem::time
+  double course = 0.0;  // [rad] nautical course on the leg ending here
+  double speed = 0.0;   // [m/s] speed on that leg
+};
+
+enum class PlanStatus : uint8_t { Ok = 0, NoSolution = 1, Fallback = 2 };
+const char* toString(PlanStatus s);
+
+struct Plan {
+  PlanStatus status = PlanStatus::NoSolution;
+  std::vector<PlannedWaypoint> waypoints;  // starts at the own ship's position (time 0)
+  double course_setpoint = 0.0;            // [rad] nautical course to steer now
+  double speed_setpoint = 0.0;             // [m/s] speed to hold now
+  double cost = 0.0;                       // algorithm-specific objective (lower is better)
+  double compute_time = 0.0;               // [s] wall time spent
+  std::string message;                     // why, for humans
+};
+
+// The core algorithm interface every planner implements (ACO, DSSA, DSSA+, MOPSO, GA).
+class PlannerAlgorithm {
+public:
+  virtual ~PlannerAlgorithm() = default;
+  // Reads the algorithm's parameters (keys documented by each algorithm); throws
+  // std::invalid_argument naming a bad or unknown key.
+  virtual void configure(const ParamMap& params) = 0;
+  virtual Plan plan(const PlanningProblem& problem) = 0;
+  virtual std::string name() const = 0;
+};
+
+// Wall-clock budget helper for anytime algorithms.
+class Deadline {
+public:
+  explicit Deadline(double seconds)
+      : start_(std::chrono::steady_clock::now()),
+        end_(start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                          std::chrono::duration<double>(seconds))) {}
+  bool expired() const { return std::chrono::steady_clock::now() >= end_; }
+  double elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+private:
+  std::chrono::steady_clock::time_point start_, end_;
+};
+
+// A target as the planners see it: its state and its risk picture (level, compliance flag, encounter
+// and role, CRI, TCPA and DCPA).
+PlannerTarget toPlannerTarget(const ShipState& target, const TargetRisk& risk);
+
+}  // namespace asv

@@ -1,0 +1,87 @@
+// Scenario files, format 1 (ARCHITECTURE.md section 5): one YAML scenario per file. Unknown keys,
+// missing fields, ambiguous position forms, unit mistakes and ships that start overlapping are errors
+// naming the file, line and key.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "asv_core/common/geodesy.h"
+#include "asv_core/common/param_map.h"
+#include "asv_core/planning/planning.h"
+
+namespace asv {
+
+class ScenarioError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class Behaviour : uint8_t { Constant, Waypoints, GiveWay, NonCompliant, Planner };
+const char* toString(Behaviour b);
+
+struct ScenarioShip {
+  std::string name;
+  uint32_t mmsi = 0;                // 0: the simulator assigns one
+  std::string model = "kinematic";  // vessel preset: kinematic | point | <3-DOF preset name>
+  char ais_class = 'A';             // 'A' (types 1/5) or 'B' (types 18/24) for NMEA emission
+  double length = 0.0;              // [m] overall length (0: the model's)
+  double beam = 0.0;                // [m]
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] ENU at t = 0
+  double course = 0.0;                                 // [rad] nautical
+  double speed = 0.0;                                  // [m/s]
+  std::optional<Eigen::Vector2d> goal;                 // [m] ENU
+  double goal_radius = 0.0;  // [m] arrival radius round the goal; 0: the simulator's (max(200 m, 2 L))
+  std::string planner;       // plugin short name; empty: none
+  Behaviour behaviour = Behaviour::Constant;  // targets only; the own ship plans (or steers for its goal)
+  std::vector<Eigen::Vector2d> waypoints;     // [m] ENU, for Behaviour::Waypoints
+};
+
+// A sensor fault the simulator's NMEA emitter plays (sim_node; asv_batch uses ground truth and ignores
+// them), for fault tests: scenario key sensor_faults.
+struct SensorFault {
+  enum class Type : uint8_t {
+    AisSilence,  // the ship's transponder sends nothing (position and static reports)
+    RadarLoss,   // the radar loses the ship: one TTM with status L, then none
+    RadarSwap,   // the radar swaps the target numbers of `ship` and `with` (two echoes passing close)
+  };
+  Type type = Type::AisSilence;
+  std::string ship, with;  // target names; `with` for RadarSwap only
+  double start = 0.0;      // [s] simulation time
+  double duration = 0.0;   // [s] > 0
+  bool active(double t) const { return t >= start && t < start + duration; }
+};
+const char* toString(SensorFault::Type t);
+
+struct Scenario {
+  int format = 1;
+  std::string name;
+  std::string description;
+  std::string source;             // file it was read from
+  double duration = 0.0;          // [s]
+  GeoPoint origin;                // geodetic origin of the local frame
+  bool has_origin = false;        // false: origin defaults to 0 N 0 E (documented)
+  double min_separation = 926.0;  // [m] evaluation threshold (default 0.5 nm)
+  ScenarioShip own;
+  std::vector<ScenarioShip> targets;
+  std::vector<StaticObstacle> obstacles;
+  std::vector<SensorFault> sensor_faults;
+  ParamMap planner_params;  // flattened: nested maps become "a/b" keys
+
+  LocalFrame frame() const { return LocalFrame(origin.lat_deg, origin.lon_deg); }
+  // Every ship that runs a planner: the own ship if it has one, and targets with behaviour planner.
+  std::vector<const ScenarioShip*> planningShips() const;
+};
+
+// Short planner names (ARCHITECTURE.md section 5).
+const std::vector<std::string>& knownPlanners();
+
+// Parses a scenario; `source` names the file in error messages. Throws ScenarioError.
+Scenario parseScenario(const std::string& yaml_text, const std::string& source = "<string>");
+Scenario loadScenario(const std::string& path);
+
+}  // namespace asv

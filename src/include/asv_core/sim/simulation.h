@@ -1,0 +1,168 @@
+// The simulated world: every ship of a scenario on its vessel model, the traffic behaviours, the
+// referee, and the NMEA the traffic emits (AIS types 1/5 and 18/24 at ITU-R M.1371 intervals, radar TTM).
+// ROS-free: sim_node and the batch runner drive the same class.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "asv_core/common/geodesy.h"
+#include "asv_core/risk/risk_level.h"
+#include "asv_core/sim/autopilot.h"
+#include "asv_core/sim/scenario.h"
+#include "asv_core/sim/vessel_model.h"
+
+namespace asv {
+
+struct TrafficConfig {
+  // give_way behaviour: a COLREGs-compliant target that, when it is the give-way vessel (Rules 14-16)
+  // and a risk of collision exists (Hu eq. 1 with these thresholds), alters to starboard in good time.
+  double give_way_alteration_deg = 40.0;  // [deg] >= 30 so the alteration is readily apparent (Rule 8(b))
+  double give_way_tcpa = 900.0;           // [s] act when the CPA is this close in time (15 min) ...
+  double give_way_dcpa = 1852.0;          // [m] ... and closer than this (1 nm)
+  double waypoint_acceptance = 200.0;     // [m] kinematic waypoint following: switch within this radius
+  void validate() const;
+};
+
+struct SimConfig {
+  double dt = 0.1;  // [s] integration step
+  // A collision is two hull outlines (length x beam rectangles round each ship's reference point)
+  // touching; with collision_distance > 0, any two ships closer than that instead.
+  double collision_distance = 0.0;        // [m]
+  double default_beam_ratio = 1.0 / 6.0;  // beam = length x this when the scenario gives no beam
+  Environment environment;                // wind and waves for the 3-DOF models
+  TrafficConfig traffic;
+  void validate() const;
+};
+
+struct SimVessel {
+  std::string name;
+  uint32_t mmsi = 0;
+  char ais_class = 'A';
+  bool own = false;
+  Behaviour behaviour = Behaviour::Constant;
+  std::string planner;  // plugin name for the own ship or a planner target
+  std::string model_name;
+  std::unique_ptr<VesselModel> model;
+  std::unique_ptr<Autopilot> autopilot;            // 3-DOF models only
+  double length = 0.0, beam = 0.0;                 // [m]
+  double course_sp = 0.0, speed_sp = 0.0;          // [rad], [m/s] current set-points
+  double cruise_course = 0.0, cruise_speed = 0.0;  // what the ship does when nothing disturbs it
+  std::optional<Eigen::Vector2d> goal;
+  double goal_radius = 0.0;  // [m] arrival radius; 0: max(traffic.waypoint_acceptance, 2 L)
+  std::vector<Eigen::Vector2d> waypoints;
+  size_t wp_index = 0;
+  Eigen::Vector2d step_from = Eigen::Vector2d::Zero();  // [m] position at the start of the last step
+  bool arrived = false;
+  double arrival_time = -1.0;
+  bool giving_way = false;  // give_way behaviour: alteration in progress
+  std::string giving_way_to;
+  bool external_setpoint = false;  // a planner has sent a set-point
+  double path_length = 0.0;        // [m] travelled so far
+
+  const VesselState& state() const { return model->state(); }
+  Eigen::Vector2d position() const { return model->state().position(); }
+  double cog() const { return model->courseOverGround(); }
+  double sog() const { return model->speedOverGround(); }
+  ShipState shipState() const;
+};
+
+struct SimEvent {
+  enum Type { Collision, NearMiss, Arrival } type;
+  double time = 0.0;
+  std::string a, b;
+  double distance = 0.0;  // [m]
+};
+const char* toString(SimEvent::Type t);
+
+class Simulation {
+public:
+  // Throws std::invalid_argument / std::runtime_error on a bad config or an unknown vessel preset.
+  Simulation(const Scenario& scenario, const SimConfig& config = {});
+
+  void step();  // advances config.dt
+  double time() const { return time_; }
+  bool finished() const { return time_ >= scenario_.duration - 1e-9; }
+
+  // Course/speed set-point from a planner (or a test) for a ship: the ship follows it from now on.
+  // Returns false for an unknown ship or non-finite values (nothing changes).
+  bool setSetpoint(const std::string& ship, double course, double speed);
+  // Waypoints for a ship to follow (3-DOF by LOS, kinematic by pure pursuit), at `speed`.
+  bool setWaypoints(const std::string& ship, const std::vector<Eigen::Vector2d>& wps, double speed);
+
+  const std::vector<SimVessel>& vessels() const { return vessels_; }
+  const SimVessel* find(const std::string& name) const;
+  const SimVessel& own() const { return vessels_[0]; }
+  const Scenario& scenario() const { return scenario_; }
+  const LocalFrame& frame() const { return frame_; }
+  const SimConfig& config() const { return cfg_; }
+
+  // Referee.
+  const std::vector<SimEvent>& events() const { return events_; }
+  bool collided() const { return collided_; }
+  double minSeparationOwn() const { return min_sep_own_; }  // [m] own ship to any other, whole run
+  double minDistanceTo(size_t vessel_index) const { return min_dist_[vessel_index]; }  // own to vessel i
+  // Hull outlines of two ships touch (separating axis test on their rectangles).
+  static bool hullsTouch(const SimVessel& a, const SimVessel& b);
+
+private:
+  void steer(SimVessel& v);
+  void giveWayLogic(SimVessel& v, size_t index);
+  void referee();
+
+  Scenario scenario_;
+  SimConfig cfg_;
+  LocalFrame frame_;
+  std::vector<SimVessel> vessels_;
+  double time_ = 0.0;
+  std::vector<SimEvent> events_;
+  bool collided_ = false;
+  double min_sep_own_ = 1e12;
+  std::vector<double> min_dist_;
+  std::vector<std::vector<char>> in_contact_, in_near_miss_;
+};
+
+// NMEA the traffic emits, as an AIS receiver and a radar on the own ship would receive it.
+struct EmitterConfig {
+  bool ais = true;
+  bool radar = true;
+  double radar_range = 12.0 * 1852.0;  // [m] targets beyond are not tracked
+  double radar_period = 2.5;           // [s] one antenna revolution (24 rpm)
+  double range_noise = 10.0;           // [m] 1-sigma range noise of a TTM
+  double bearing_noise_deg = 0.5;      // [deg] 1-sigma bearing noise
+  double speed_noise_kn = 0.2;         // [kn] 1-sigma speed noise
+  double course_noise_deg = 1.0;       // [deg] 1-sigma course noise
+  double radar_dropout = 0.02;         // probability that a scan misses a target
+  double ais_dropout = 0.0;            // probability that an AIS report is lost
+  double static_interval = 360.0;      // [s] types 5 / 24 (ITU-R M.1371: 6 min)
+  void validate() const;
+};
+
+class NmeaEmitter {
+public:
+  NmeaEmitter(const EmitterConfig& cfg, uint64_t seed);
+  // Sentences due since the last call (at simulation time sim.time()), in emission order. The own
+  // ship (vessel 0) is the receiver and is never reported. The scenario's sensor_faults are played:
+  // an AIS silence sends nothing of the ship, a radar loss sends one TTM with status L and then none,
+  // a radar swap reports each of the two ships under the other's target number.
+  void update(const Simulation& sim, std::vector<std::string>& ais, std::vector<std::string>& ttm);
+  // ITU-R M.1371-5 Table 1 reporting interval [s] for a vessel.
+  static double reportingInterval(char ais_class, double sog, double rate_of_turn, uint8_t nav_status = 0);
+  uint64_t aisSent() const { return ais_sent_; }
+  uint64_t ttmSent() const { return ttm_sent_; }
+
+private:
+  EmitterConfig cfg_;
+  std::mt19937_64 rng_;
+  std::vector<double> next_pos_, next_static_;
+  double next_scan_ = 0.0;
+  std::vector<char> loss_announced_;  // per scenario sensor fault: the status-L TTM went out
+  int seq_ = 0;
+  bool channel_b_ = false;
+  uint64_t ais_sent_ = 0, ttm_sent_ = 0;
+};
+
+}  // namespace asv

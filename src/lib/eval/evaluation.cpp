@@ -1,0 +1,842 @@
+#include "asv_core/eval/evaluation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "asv_core/risk/cpa.h"
+
+namespace asv {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kFar = 1e300;
+
+void require(bool ok, const std::string& what) {
+  if (!ok)
+    throw std::invalid_argument("evaluation: " + what);
+}
+
+std::string fmt(const char* f, double a) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, f, a);
+  return buf;
+}
+std::string fmt(const char* f, double a, double b) {
+  char buf[192];
+  std::snprintf(buf, sizeof buf, f, a, b);
+  return buf;
+}
+std::string fmt(const char* f, double a, double b, double c) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, a, b, c);
+  return buf;
+}
+std::string fmt(const char* f, double a, double b, double c, double d) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, a, b, c, d);
+  return buf;
+}
+
+// ---- a minimal ordered JSON tree ------------------------------------------------------------------
+
+struct Json {
+  enum Kind { Null, Bool, Num, Int, Str, Arr, Obj } kind = Null;
+  double num = 0.0;
+  int prec = 3;
+  long long i = 0;
+  bool b = false;
+  std::string s;
+  std::vector<std::pair<std::string, Json>> obj;
+  std::vector<Json> arr;
+
+  static Json number(double v, int prec) {
+    Json j;
+    if (!std::isfinite(v))
+      return j;  // null: NaN and inf are never printed
+    j.kind = Num;
+    j.num = v;
+    j.prec = prec;
+    return j;
+  }
+  static Json integer(long long v) {
+    Json j;
+    j.kind = Int;
+    j.i = v;
+    return j;
+  }
+  static Json boolean(bool v) {
+    Json j;
+    j.kind = Bool;
+    j.b = v;
+    return j;
+  }
+  static Json string(const std::string& v) {
+    Json j;
+    j.kind = Str;
+    j.s = v;
+    return j;
+  }
+  static Json object() {
+    Json j;
+    j.kind = Obj;
+    return j;
+  }
+  static Json array() {
+    Json j;
+    j.kind = Arr;
+    return j;
+  }
+  Json& add(const std::string& key, Json v) {
+    obj.emplace_back(key, std::move(v));
+    return *this;
+  }
+};
+
+std::string quote(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      default:
+        if (c < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::string numberText(double v, int prec) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", prec, v);
+  std::string s = buf;
+  // "-0.000" is 0: the sign of a zero must not make two equal runs differ.
+  if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos)
+    s.erase(0, 1);
+  return s;
+}
+
+bool scalar(const Json& j) {
+  return j.kind != Json::Arr && j.kind != Json::Obj;
+}
+
+void write(const Json& j, bool pretty, int indent, std::string& out) {
+  const std::string pad = pretty ? std::string(2 * (indent + 1), ' ') : "";
+  const std::string end_pad = pretty ? std::string(2 * indent, ' ') : "";
+  switch (j.kind) {
+    case Json::Null:
+      out += "null";
+      return;
+    case Json::Bool:
+      out += j.b ? "true" : "false";
+      return;
+    case Json::Num:
+      out += numberText(j.num, j.prec);
+      return;
+    case Json::Int:
+      out += std::to_string(j.i);
+      return;
+    case Json::Str:
+      out += quote(j.s);
+      return;
+    case Json::Arr: {
+      if (j.arr.empty()) {
+        out += "[]";
+        return;
+      }
+      const bool flat = !pretty || std::all_of(j.arr.begin(), j.arr.end(), scalar);
+      out += "[";
+      for (size_t k = 0; k < j.arr.size(); ++k) {
+        if (k)
+          out += ",";
+        if (flat) {
+          if (k)
+            out += " ";
+        } else {
+          out += "\n" + pad;
+        }
+        write(j.arr[k], pretty, indent + 1, out);
+      }
+      out += flat ? "]" : "\n" + end_pad + "]";
+      return;
+    }
+    case Json::Obj: {
+      if (j.obj.empty()) {
+        out += "{}";
+        return;
+      }
+      // Inside an array, small objects (manoeuvres) stay on one line even when pretty.
+      const bool small = j.obj.size() <= 3 && std::all_of(j.obj.begin(), j.obj.end(),
+                                                          [](const auto& kv) { return scalar(kv.second); });
+      const bool flat = !pretty || small;
+      out += "{";
+      for (size_t k = 0; k < j.obj.size(); ++k) {
+        if (k)
+          out += ",";
+        if (flat) {
+          if (k)
+            out += " ";
+        } else {
+          out += "\n" + pad;
+        }
+        out += quote(j.obj[k].first) + ": ";
+        write(j.obj[k].second, pretty, indent + 1, out);
+      }
+      out += flat ? "}" : "\n" + end_pad + "}";
+      return;
+    }
+  }
+}
+
+// Precisions: metres and seconds 0.1, degrees 0.1, ratios and scores 1e-4, milliseconds 1e-3.
+constexpr int kMetres = 1, kSeconds = 1, kDegrees = 1, kRatio = 4, kMs = 3;
+
+Json targetJson(const TargetResult& t) {
+  Json o = Json::object();
+  o.add("name", Json::string(t.name));
+  o.add("encounter", Json::string(encounterName(t.encounter)));
+  o.add("own_role", Json::string(roleName(t.role)));
+  o.add("min_distance_m", Json::number(t.min_distance, kMetres));
+  o.add("tcpa_at_start_s", Json::number(t.tcpa_at_start, kSeconds));
+  o.add("dcpa_at_start_m", Json::number(t.dcpa_at_start, kMetres));
+  o.add("colregs_ok", Json::boolean(t.colregs_ok));
+  Json notes = Json::array();
+  for (const auto& n : t.notes)
+    notes.arr.push_back(Json::string(n));
+  o.add("colregs_notes", notes);
+  o.add("colregs_score", Json::number(t.score, kRatio));
+  return o;
+}
+
+Json manoeuvresJson(const std::vector<Manoeuvre>& ms) {
+  Json a = Json::array();
+  for (const auto& m : ms) {
+    Json o = Json::object();
+    o.add("t_s", Json::number(m.time, kSeconds));
+    o.add("course_change_deg", Json::number(radToDeg(m.course_change), kDegrees));
+    a.arr.push_back(o);
+  }
+  return a;
+}
+
+Json targetsJson(const std::vector<TargetResult>& ts) {
+  Json a = Json::array();
+  for (const auto& t : ts)
+    a.arr.push_back(targetJson(t));
+  return a;
+}
+
+double sideOf(const Eigen::Vector2d& u, const Eigen::Vector2d& rel) {
+  return u.x() * rel.y() - u.y() * rel.x();
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------
+
+const char* encounterName(Encounter e) {
+  switch (e) {
+    case Encounter::HeadOn:
+      return "head_on";
+    case Encounter::CrossingGiveWay:
+    case Encounter::CrossingStandOn:
+      return "crossing";
+    case Encounter::Overtaking:
+      return "overtaking";
+    case Encounter::BeingOvertaken:
+      return "being_overtaken";
+    case Encounter::None:
+      break;
+  }
+  return "none";
+}
+
+const char* roleName(OwnRole r) {
+  switch (r) {
+    case OwnRole::GiveWay:
+    case OwnRole::BothGiveWay:
+      return "give_way";
+    case OwnRole::StandOn:
+      return "stand_on";
+    case OwnRole::None:
+      break;
+  }
+  return "none";
+}
+
+void EvaluationConfig::validate() const {
+  auto pos = [](double v) { return std::isfinite(v) && v > 0.0; };
+  auto frac = [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 1.0; };
+  require(pos(r_nm_m) && r_min_m > r_nm_m && r_pref_m > r_min_m && std::isfinite(r_pref_m),
+          "ranges must satisfy 0 < r_nm_m < r_min_m < r_pref_m");
+  require(safety_at_r_min > 0.0 && safety_at_r_min < 1.0, "safety_at_r_min must be in (0, 1)");
+  require(pos(entry_tcpa_s) && pos(entry_dcpa_m), "entry_tcpa_s and entry_dcpa_m must be > 0");
+  require(pos(action_course_deg) && action_course_deg < 180.0, "action_course_deg must be in (0, 180)");
+  require(action_speed_fraction > 0.0 && action_speed_fraction <= 1.0,
+          "action_speed_fraction must be in (0, 1]");
+  require(
+      pos(apparent_course_deg) && apparent_course_deg <= 180.0 && apparent_course_deg >= action_course_deg,
+      "apparent_course_deg must be in [action_course_deg, 180]");
+  require(apparent_speed_fraction > 0.0 && apparent_speed_fraction <= 1.0,
+          "apparent_speed_fraction must be in (0, 1]");
+  require(pos(early_range_m) && pos(early_tcpa_s), "early_range_m and early_tcpa_s must be > 0");
+  require(pos(cross_ahead_range_m), "cross_ahead_range_m must be > 0");
+  require(frac(penalty_rule8) && frac(penalty_late) && frac(penalty_port) && frac(penalty_ahead) &&
+              frac(penalty_stand_on),
+          "penalties must be in [0, 1]");
+  require(pos(manoeuvre_threshold_deg) && manoeuvre_threshold_deg < 180.0,
+          "manoeuvre_threshold_deg must be in (0, 180)");
+  require(std::isfinite(manoeuvre_window_s) && manoeuvre_window_s >= 0.0, "manoeuvre_window_s must be >= 0");
+  require(std::isfinite(sample_period_s) && sample_period_s >= 0.0, "sample_period_s must be >= 0");
+  hu.validate();
+  colregs.validate();
+}
+
+EvaluationConfig EvaluationConfig::fromParams(const ParamMap& p) {
+  EvaluationConfig c;
+  c.ranges_from_scenario = p.getBool("ranges_from_scenario", c.ranges_from_scenario);
+  c.r_pref_m = p.getDouble("r_pref_m", c.r_pref_m);
+  c.r_min_m = p.getDouble("r_min_m", c.r_min_m);
+  c.r_nm_m = p.getDouble("r_nm_m", c.r_nm_m);
+  c.safety_at_r_min = p.getDouble("safety_at_r_min", c.safety_at_r_min);
+  c.entry_tcpa_s = p.getDouble("entry_tcpa_s", c.entry_tcpa_s);
+  c.entry_dcpa_m = p.getDouble("entry_dcpa_m", c.entry_dcpa_m);
+  c.action_course_deg = p.getDouble("action_course_deg", c.action_course_deg);
+  c.action_speed_fraction = p.getDouble("action_speed_fraction", c.action_speed_fraction);
+  c.apparent_course_deg = p.getDouble("apparent_course_deg", c.apparent_course_deg);
+  c.apparent_speed_fraction = p.getDouble("apparent_speed_fraction", c.apparent_speed_fraction);
+  c.early_range_m = p.getDouble("early_range_m", c.early_range_m);
+  c.early_tcpa_s = p.getDouble("early_tcpa_s", c.early_tcpa_s);
+  c.cross_ahead_range_m = p.getDouble("cross_ahead_range_m", c.cross_ahead_range_m);
+  c.hu.t_max_s = p.getDouble("hu/t_max_s", c.hu.t_max_s);
+  c.hu.d_min_m = p.getDouble("hu/d_min_m", c.hu.d_min_m);
+  c.hu.t_safe_s = p.getDouble("hu/t_safe_s", c.hu.t_safe_s);
+  c.hu.d_safe_m = p.getDouble("hu/d_safe_m", c.hu.d_safe_m);
+  c.penalty_rule8 = p.getDouble("penalty_rule8", c.penalty_rule8);
+  c.penalty_late = p.getDouble("penalty_late", c.penalty_late);
+  c.penalty_port = p.getDouble("penalty_port", c.penalty_port);
+  c.penalty_ahead = p.getDouble("penalty_ahead", c.penalty_ahead);
+  c.penalty_stand_on = p.getDouble("penalty_stand_on", c.penalty_stand_on);
+  c.manoeuvre_threshold_deg = p.getDouble("manoeuvre_threshold_deg", c.manoeuvre_threshold_deg);
+  c.manoeuvre_window_s = p.getDouble("manoeuvre_window_s", c.manoeuvre_window_s);
+  c.sample_period_s = p.getDouble("sample_period_s", c.sample_period_s);
+  c.colregs.head_on_half_angle_deg =
+      p.getDouble("colregs/head_on_half_angle_deg", c.colregs.head_on_half_angle_deg);
+  c.colregs.stern_sector_start_deg =
+      p.getDouble("colregs/stern_sector_start_deg", c.colregs.stern_sector_start_deg);
+  c.colregs.max_range_m = p.getDouble("colregs/max_range_m", c.colregs.max_range_m);
+  p.rejectUnknown("evaluation");
+  c.validate();
+  return c;
+}
+
+RunInfo RunInfo::fromScenario(const Scenario& sc, const std::string& planner, uint64_t seed) {
+  RunInfo info;
+  info.scenario = sc.name;
+  info.planner = planner.empty() ? "none" : planner;
+  info.seed = seed;
+  info.min_separation = sc.min_separation;
+  info.ships.push_back({sc.own.name, sc.own.goal, info.planner});
+  for (const auto& t : sc.targets) {
+    const bool plans = t.behaviour == Behaviour::Planner;
+    info.ships.push_back({t.name, t.goal, plans ? (t.planner.empty() ? "none" : t.planner) : ""});
+    info.multi_agent = info.multi_agent || plans;
+  }
+  return info;
+}
+
+double safetyScore(double r, double r_pref, double r_min, double r_nm, double at_r_min) {
+  if (!std::isfinite(r) || r >= r_pref)
+    return 1.0;
+  if (r >= r_min)
+    return at_r_min + (1.0 - at_r_min) * (r - r_min) / (r_pref - r_min);
+  if (r > r_nm)
+    return at_r_min * (r - r_nm) / (r_min - r_nm);
+  return 0.0;
+}
+
+// ---------------------------------------------------------------------------------------------------
+
+RunRecorder::RunRecorder(const EvaluationConfig& config, const RunInfo& info) : cfg_(config), info_(info) {
+  cfg_.validate();
+  require(!info_.ships.empty(), "RunInfo lists no ships (the own ship comes first)");
+  require(std::isfinite(info_.min_separation) && info_.min_separation > 0.0,
+          "RunInfo.min_separation must be > 0 m");
+  if (cfg_.ranges_from_scenario) {
+    r_min_ = info_.min_separation;
+    r_pref_ = 2.0 * r_min_;
+    r_nm_ = r_min_ / 5.0;
+  } else {
+    r_pref_ = cfg_.r_pref_m;
+    r_min_ = cfg_.r_min_m;
+    r_nm_ = cfg_.r_nm_m;
+  }
+  const size_t n = info_.ships.size();
+  tracks_.resize(n);
+  min_dist_.assign(n, std::vector<double>(n, kFar));
+  collided_.assign(n, std::vector<char>(n, 0));
+  arrival_.assign(n, kNaN);
+}
+
+int RunRecorder::index(const std::string& name) const {
+  for (size_t i = 0; i < info_.ships.size(); ++i)
+    if (info_.ships[i].name == name)
+      return static_cast<int>(i);
+  return -1;
+}
+
+void RunRecorder::addSample(double t, const std::vector<ShipSample>& ships) {
+  if (!std::isfinite(t))
+    return;
+  ++samples_;
+  last_t_ = std::max(last_t_, t);
+  std::vector<std::pair<int, const ShipSample*>> present;
+  for (const auto& s : ships) {
+    const int i = index(s.name);
+    if (i < 0 || !s.state.finite())
+      continue;
+    present.emplace_back(i, &s);
+    Track& tr = tracks_[i];
+    const Eigen::Vector2d p = s.state.position;
+    if (!tr.have_first) {
+      tr.have_first = true;
+      tr.first_pos = p;
+    }
+    if (tr.have_last && s.active)
+      tr.path_length += (p - tr.last_pos).norm();
+    tr.last_pos = p;
+    tr.have_last = true;
+    if (tr.points.empty() || t - tr.last_kept >= cfg_.sample_period_s - 1e-9) {
+      tr.points.push_back({t, s.state, s.active});
+      tr.last_kept = t;
+    }
+    if (std::isfinite(s.course_setpoint))
+      addSetpoint(t, s.name, s.course_setpoint);
+  }
+  for (size_t a = 0; a < present.size(); ++a)
+    for (size_t b = a + 1; b < present.size(); ++b) {
+      const auto& [i, si] = present[a];
+      const auto& [j, sj] = present[b];
+      if (i == j || !si->active || !sj->active)
+        continue;
+      const double d = (si->state.position - sj->state.position).norm();
+      min_dist_[i][j] = std::min(min_dist_[i][j], d);
+      min_dist_[j][i] = min_dist_[i][j];
+    }
+}
+
+void RunRecorder::addSetpoint(double t, const std::string& ship, double course) {
+  const int i = index(ship);
+  if (i < 0 || !std::isfinite(course) || !std::isfinite(t))
+    return;
+  auto& sp = tracks_[i].setpoints;
+  course = wrapTwoPi(course);
+  if (sp.empty() || std::fabs(wrapPi(course - sp.back().second)) > 1e-9)
+    sp.emplace_back(t, course);
+}
+
+void RunRecorder::addPlanTime(double seconds) {
+  if (std::isfinite(seconds) && seconds >= 0.0)
+    plan_times_.push_back(seconds);
+}
+
+void RunRecorder::addEvent(const SimEvent& e) {
+  const int a = index(e.a), b = index(e.b);
+  switch (e.type) {
+    case SimEvent::Collision:
+      any_collision_ = true;
+      if (a >= 0 && b >= 0)
+        collided_[a][b] = collided_[b][a] = 1;
+      break;
+    case SimEvent::Arrival:
+      if (a >= 0 && !std::isfinite(arrival_[a]))
+        arrival_[a] = e.time;
+      break;
+    case SimEvent::NearMiss:
+      break;  // recomputed from the samples against the scenario's threshold
+  }
+}
+
+std::vector<Manoeuvre> RunRecorder::manoeuvres(const Track& tr) const {
+  std::vector<Manoeuvre> out;
+  const auto& sp = tr.setpoints;
+  if (sp.empty())
+    return out;
+  const double thr = degToRad(cfg_.manoeuvre_threshold_deg);
+  // The reference is the course the ship sailed at the start, so a first plan that turns away from it
+  // is a manoeuvre.
+  double anchor = tr.points.empty() ? sp.front().second : tr.points.front().s.course;
+  size_t i = 0;
+  while (i < sp.size()) {
+    if (std::fabs(wrapPi(sp[i].second - anchor)) < thr) {
+      ++i;
+      continue;
+    }
+    const double t0 = sp[i].first;
+    double last = sp[i].second;
+    size_t j = i + 1;
+    while (j < sp.size() && sp[j].first <= t0 + cfg_.manoeuvre_window_s + 1e-9)
+      last = sp[j++].second;
+    const double change = wrapPi(last - anchor);
+    if (std::fabs(change) >= thr)
+      out.push_back({t0, change});
+    anchor = last;
+    i = j;
+  }
+  return out;
+}
+
+TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
+  TargetResult r;
+  r.name = info_.ships[j].name;
+  r.min_distance = min_dist_[i][j] < kFar ? min_dist_[i][j] : kNaN;
+  r.collision = collided_[i][j] != 0;
+  r.safety = r.collision ? 0.0 : safetyScore(r.min_distance, r_pref_, r_min_, r_nm_, cfg_.safety_at_r_min);
+
+  // Common instants of both ships while both are in the scenario.
+  const auto& A = tracks_[i].points;
+  const auto& B = tracks_[j].points;
+  std::vector<std::pair<const Point*, const Point*>> both;
+  for (size_t a = 0, b = 0; a < A.size() && b < B.size();) {
+    if (std::fabs(A[a].t - B[b].t) < 1e-6) {
+      if (A[a].active && B[b].active)
+        both.emplace_back(&A[a], &B[b]);
+      ++a;
+      ++b;
+    } else if (A[a].t < B[b].t) {
+      ++a;
+    } else {
+      ++b;
+    }
+  }
+  auto finishScore = [&](double factor) {
+    r.score = std::clamp(r.safety * factor, 0.0, 1.0);
+    if (r.collision) {
+      r.notes.push_back("collision");
+      r.colregs_ok = false;
+    } else if (std::isfinite(r.min_distance) && r.min_distance < r_min_) {
+      r.notes.push_back(fmt("closest approach %.0f m < minimum %.0f m", r.min_distance, r_min_));
+    }
+  };
+  if (both.empty()) {
+    finishScore(1.0);
+    return r;
+  }
+  const Cpa c0 = computeCpa(both.front().first->s, both.front().second->s);
+  r.tcpa_at_start = c0.tcpa;
+  r.dcpa_at_start = c0.dcpa;
+
+  std::vector<Cpa> cpas(both.size());
+  size_t ke = both.size();
+  for (size_t k = 0; k < both.size(); ++k) {
+    cpas[k] = computeCpa(both[k].first->s, both[k].second->s);
+    const Cpa& c = cpas[k];
+    if (ke == both.size() && c.relative_motion && c.tcpa > 0.0 && c.tcpa <= cfg_.entry_tcpa_s &&
+        c.dcpa < cfg_.entry_dcpa_m && c.range <= cfg_.colregs.max_range_m)
+      ke = k;
+  }
+  if (ke == both.size()) {
+    const EncounterGeometry g =
+        classifyEncounter(both.front().first->s, both.front().second->s, c0, cfg_.colregs);
+    r.encounter = g.encounter;
+    r.role = g.role;
+    r.notes.push_back("no risk of collision developed: rules 8 and 13-17 not evaluated");
+    finishScore(1.0);
+    return r;
+  }
+  r.evaluated = true;
+  const ShipState& own_e = both[ke].first->s;
+  const EncounterGeometry g = classifyEncounter(own_e, both[ke].second->s, cpas[ke], cfg_.colregs);
+  r.encounter = g.encounter;
+  r.role = g.role;
+
+  // The passage: from entry to the closest approach.
+  size_t kc = ke;
+  for (size_t k = ke; k < both.size(); ++k)
+    if (cpas[k].range < cpas[kc].range)
+      kc = k;
+  const double c_ref = own_e.course, v_ref = own_e.speed;
+  const double act_course = degToRad(cfg_.action_course_deg);
+  double max_stbd = 0.0, max_port = 0.0, speed_drop = 0.0;
+  size_t ka = both.size();
+  for (size_t k = ke; k <= kc; ++k) {
+    const ShipState& s = both[k].first->s;
+    const double dev = wrapPi(s.course - c_ref);
+    const double drop = v_ref > 0.1 ? std::max(0.0, 1.0 - s.speed / v_ref) : 0.0;
+    max_stbd = std::max(max_stbd, dev);
+    max_port = std::max(max_port, -dev);
+    speed_drop = std::max(speed_drop, drop);
+    if (ka == both.size() && (std::fabs(dev) >= act_course || drop >= cfg_.action_speed_fraction))
+      ka = k;
+  }
+  const double alter_deg = radToDeg(std::max(max_stbd, max_port));
+  const char* side = max_stbd >= max_port ? "starboard" : "port";
+  const bool port_dominant = max_port >= act_course && max_port > max_stbd;
+  double factor = 1.0;
+  auto penalise = [&](double p, const std::string& note) {
+    if (p <= 0.0)
+      return;
+    factor *= 1.0 - p;
+    r.colregs_ok = false;
+    r.notes.push_back(note);
+  };
+
+  if (g.role == OwnRole::GiveWay || g.role == OwnRole::BothGiveWay) {
+    // Rule 8: readily apparent.
+    const double apparent =
+        std::max(alter_deg / cfg_.apparent_course_deg, speed_drop / cfg_.apparent_speed_fraction);
+    if (apparent < 1.0)
+      penalise(cfg_.penalty_rule8 * (1.0 - apparent),
+               std::string("rule 8: ") + side +
+                   fmt(" turn %.0f deg (speed -%.0f %%) < %.0f deg apparent", alter_deg, 100.0 * speed_drop,
+                       cfg_.apparent_course_deg));
+    // Rule 16: early.
+    if (ka == both.size()) {
+      penalise(cfg_.penalty_late, "rule 16: the give-way ship took no action");
+    } else {
+      const size_t kb = ka > ke ? ka - 1 : ke;
+      const double range = cpas[kb].range, tcpa = cpas[kb].tcpa;
+      const double early = std::max(range / cfg_.early_range_m, tcpa / cfg_.early_tcpa_s);
+      if (early < 1.0)
+        penalise(cfg_.penalty_late * (1.0 - early),
+                 fmt("rule 16: first action at t=%.0f s, %.0f m and %.0f s from CPA: late (early: %.0f m or ",
+                     both[ka].first->t, range, tcpa, cfg_.early_range_m) +
+                     fmt("%.0f s)", cfg_.early_tcpa_s));
+    }
+    // Rules 14 and 15: starboard.
+    if (port_dominant && g.encounter == Encounter::HeadOn)
+      penalise(cfg_.penalty_port,
+               fmt("rule 14: turned %.0f deg to port in a head-on encounter", radToDeg(max_port)));
+    if (port_dominant && g.encounter == Encounter::CrossingGiveWay)
+      penalise(cfg_.penalty_port, fmt("rule 15: turned %.0f deg to port for a ship crossing from starboard",
+                                      radToDeg(max_port)));
+    // Rule 15: not across the stand-on ship's bow. The first time the own ship crosses the target's
+    // track line after entry decides.
+    if (g.encounter == Encounter::CrossingGiveWay) {
+      for (size_t k = ke + 1; k < both.size(); ++k) {
+        const ShipState& t0 = both[k - 1].second->s;
+        const ShipState& t1 = both[k].second->s;
+        const Eigen::Vector2d u0 = courseSpeedToVelocity(t0.course, 1.0);
+        const Eigen::Vector2d u1 = courseSpeedToVelocity(t1.course, 1.0);
+        const Eigen::Vector2d rel0 = both[k - 1].first->s.position - t0.position;
+        const Eigen::Vector2d rel1 = both[k].first->s.position - t1.position;
+        const double s0 = sideOf(u0, rel0), s1 = sideOf(u1, rel1);
+        if ((s0 < 0.0) == (s1 < 0.0))
+          continue;
+        if (u1.dot(rel1) > 0.0 && rel1.norm() < cfg_.cross_ahead_range_m)
+          penalise(cfg_.penalty_ahead, fmt("rule 15: crossed %.0f m ahead of the stand-on ship at t=%.0f s",
+                                           rel1.norm(), both[k].first->t));
+        break;
+      }
+    }
+  } else if (g.role == OwnRole::StandOn) {
+    size_t ku = both.size();
+    for (size_t k = ke; k < both.size() && ku == both.size(); ++k)
+      if (cpas[k].tcpa >= 0.0 && riskLevel(cpas[k].tcpa, cpas[k].dcpa, cfg_.hu) == RiskLevel::Urgent)
+        ku = k;
+    if (ka < both.size() && ka < ku) {
+      const std::string urgent =
+          ku < both.size() ? fmt("urgent only at t=%.0f s", both[ku].first->t) : std::string("never urgent");
+      penalise(cfg_.penalty_stand_on,
+               fmt("rule 17: the stand-on ship altered (%.0f deg, speed -%.0f %%) at t=%.0f s, before the "
+                   "give-way ship's action was clearly lacking (",
+                   alter_deg, 100.0 * speed_drop, both[ka].first->t) +
+                   urgent + ")");
+    } else if (ka < both.size() && port_dominant && g.encounter == Encounter::CrossingStandOn) {
+      penalise(cfg_.penalty_port,
+               fmt("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(max_port)));
+    }
+  }
+  finishScore(factor);
+  return r;
+}
+
+ShipResult RunRecorder::evaluateShip(size_t i) const {
+  ShipResult s;
+  s.name = info_.ships[i].name;
+  s.planner = info_.ships[i].planner;
+  const Track& tr = tracks_[i];
+  double min_sep = kFar;
+  for (size_t j = 0; j < tracks_.size(); ++j) {
+    if (j == i)
+      continue;
+    s.collision = s.collision || collided_[i][j];
+    min_sep = std::min(min_sep, min_dist_[i][j]);
+  }
+  s.min_separation = min_sep < kFar ? min_sep : kNaN;
+  s.arrived = std::isfinite(arrival_[i]);
+  s.time_to_goal = arrival_[i];
+  s.path_length = tr.path_length;
+  const auto& goal = info_.ships[i].goal;
+  if (s.arrived && goal && tr.have_first) {
+    const double straight = (*goal - tr.first_pos).norm();
+    if (straight > 1.0)
+      s.path_ratio = tr.path_length / straight;
+  }
+  s.manoeuvres = manoeuvres(tr);
+  double sum = 0.0, safety_sum = 0.0;
+  int evaluated = 0;
+  for (size_t j = 0; j < tracks_.size(); ++j) {
+    if (j == i || tracks_[j].points.empty())
+      continue;
+    s.targets.push_back(evaluatePair(i, j));
+    const TargetResult& t = s.targets.back();
+    safety_sum += t.score;
+    if (t.evaluated) {
+      sum += t.score;
+      ++evaluated;
+    }
+  }
+  if (s.collision)
+    s.colregs_score = 0.0;
+  else if (evaluated > 0)
+    s.colregs_score = sum / evaluated;
+  else if (!s.targets.empty())
+    s.colregs_score = safety_sum / static_cast<double>(s.targets.size());
+  else
+    s.colregs_score = 1.0;
+  return s;
+}
+
+RunResult RunRecorder::finish() const {
+  RunResult r;
+  r.scenario = info_.scenario;
+  r.planner = info_.planner;
+  r.seed = info_.seed;
+  r.own = evaluateShip(0);
+  r.own.planner = info_.planner;
+  r.collision = any_collision_;
+  r.safety_violation = std::isfinite(r.own.min_separation) && r.own.min_separation < info_.min_separation;
+  if (!plan_times_.empty()) {
+    std::vector<double> v = plan_times_;
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    r.plan_time.median_ms = 1e3 * (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+    r.plan_time.max_ms = 1e3 * v.back();
+    r.plan_time.count = static_cast<long>(n);
+  }
+  r.wall_time = wall_time_;
+  r.multi_agent = info_.multi_agent;
+  if (r.multi_agent)
+    for (size_t i = 0; i < info_.ships.size(); ++i)
+      if (i == 0 || !info_.ships[i].planner.empty())
+        r.ships.push_back(i == 0 ? r.own : evaluateShip(i));
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------------
+
+void zeroWallClock(RunResult& r) {
+  r.wall_time = 0.0;
+  if (r.plan_time.count > 0)
+    r.plan_time.median_ms = r.plan_time.max_ms = 0.0;
+}
+
+std::string toJson(const RunResult& r, bool pretty) {
+  Json o = Json::object();
+  o.add("scenario", Json::string(r.scenario));
+  o.add("planner", Json::string(r.planner));
+  o.add("seed", Json::integer(static_cast<long long>(r.seed)));
+  o.add("collision", Json::boolean(r.collision));
+  o.add("min_separation_m", Json::number(r.own.min_separation, kMetres));
+  o.add("safety_violation", Json::boolean(r.safety_violation));
+  o.add("arrived", Json::boolean(r.own.arrived));
+  o.add("time_to_goal_s", Json::number(r.own.time_to_goal, kSeconds));
+  o.add("path_length_m", Json::number(r.own.path_length, kMetres));
+  o.add("path_ratio", Json::number(r.own.path_ratio, kRatio));
+  o.add("manoeuvres", manoeuvresJson(r.own.manoeuvres));
+  o.add("targets", targetsJson(r.own.targets));
+  o.add("colregs_score", Json::number(r.own.colregs_score, kRatio));
+  Json pt = Json::object();
+  pt.add("median", Json::number(r.plan_time.median_ms, kMs));
+  pt.add("max", Json::number(r.plan_time.max_ms, kMs));
+  pt.add("count", Json::integer(r.plan_time.count));
+  o.add("plan_time_ms", pt);
+  o.add("wall_time_s", Json::number(r.wall_time, kMs));
+  if (r.multi_agent) {
+    Json ships = Json::array();
+    for (const auto& s : r.ships) {
+      Json e = Json::object();
+      e.add("name", Json::string(s.name));
+      e.add("planner", Json::string(s.planner));
+      e.add("collision", Json::boolean(s.collision));
+      e.add("min_separation_m", Json::number(s.min_separation, kMetres));
+      e.add("arrived", Json::boolean(s.arrived));
+      e.add("time_to_goal_s", Json::number(s.time_to_goal, kSeconds));
+      e.add("path_length_m", Json::number(s.path_length, kMetres));
+      e.add("path_ratio", Json::number(s.path_ratio, kRatio));
+      e.add("manoeuvres", manoeuvresJson(s.manoeuvres));
+      e.add("targets", targetsJson(s.targets));
+      e.add("colregs_score", Json::number(s.colregs_score, kRatio));
+      ships.arr.push_back(e);
+    }
+    o.add("ships", ships);
+  }
+  std::string out;
+  write(o, pretty, 0, out);
+  return out;
+}
+
+std::string summaryLine(const RunResult& r) {
+  std::ostringstream os;
+  os << r.scenario << " / " << r.planner << " / seed " << r.seed << ": "
+     << (r.collision ? "COLLISION" : "no collision");
+  os << fmt(", min sep %.0f m", std::isfinite(r.own.min_separation) ? r.own.min_separation : -1.0);
+  if (r.safety_violation)
+    os << " (SAFETY VIOLATION)";
+  if (r.own.arrived)
+    os << fmt(", arrived in %.0f s", r.own.time_to_goal);
+  else
+    os << ", not arrived";
+  if (std::isfinite(r.own.path_ratio))
+    os << fmt(", path ratio %.3f", r.own.path_ratio);
+  os << fmt(", COLREGs %.2f", r.own.colregs_score);
+  if (r.plan_time.count > 0)
+    os << fmt(", plan %.1f ms median", r.plan_time.median_ms) << " (" << r.plan_time.count << ")";
+  return os.str();
+}
+
+std::string summaryTable(const RunResult& r) {
+  std::ostringstream os;
+  os << summaryLine(r) << "\n";
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "  %-12s %-16s %-9s %10s %10s %10s %6s %s\n", "target", "encounter", "role",
+                "min_dist_m", "tcpa0_s", "dcpa0_m", "score", "notes");
+  os << buf;
+  for (const auto& t : r.own.targets) {
+    std::string notes;
+    for (const auto& n : t.notes)
+      notes += (notes.empty() ? "" : "; ") + n;
+    std::snprintf(buf, sizeof buf, "  %-12s %-16s %-9s %10.0f %10.0f %10.0f %6.2f ", t.name.c_str(),
+                  encounterName(t.encounter), roleName(t.role), t.min_distance, t.tcpa_at_start,
+                  t.dcpa_at_start, t.score);
+    os << buf << notes << "\n";
+  }
+  for (const auto& m : r.own.manoeuvres)
+    os << fmt("  manoeuvre at t=%.0f s: %+.1f deg\n", m.time, radToDeg(m.course_change));
+  return os.str();
+}
+
+}  // namespace asv

@@ -1,0 +1,321 @@
+#include "asv_core/papers/dssa_experiments.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace asv {
+
+namespace {
+
+DssaSimShip ship(const std::string& name, Eigen::Vector2d start, Eigen::Vector2d goal, double ref) {
+  DssaSimShip s;
+  s.name = name;
+  s.start = start;
+  s.goal = goal;
+  // MinSPD and MaxSPD are not given (Sec. 4). Ships may slow to a stop and speed up by one largest
+  // speed change (8) above their reference speed; MaxSPD = RefSPD was tried too (docs/results/dssa.md).
+  s.speeds.ref = ref;
+  s.speeds.min = 0.0;
+  s.speeds.max = ref + 8.0;
+  return s;
+}
+
+// Smallest distance between two ships moving straight from a0 and b0 with velocities va and vb over
+// [0, t_end].
+double minDistance(const Eigen::Vector2d& a0, const Eigen::Vector2d& va, const Eigen::Vector2d& b0,
+                   const Eigen::Vector2d& vb, double t_end) {
+  const Eigen::Vector2d r = b0 - a0;
+  const Eigen::Vector2d w = vb - va;
+  const double w2 = w.squaredNorm();
+  double t = 0.0;
+  if (w2 > 0.0)
+    t = std::min(std::max(-r.dot(w) / w2, 0.0), t_end);
+  return (r + w * t).norm();
+}
+
+}  // namespace
+
+DssaScenario dssaTwoShipScenario() {
+  DssaScenario s;
+  s.name = "two_ships";
+  s.description =
+      "Sec. 5.1: two ships side by side 200 apart, each bound 450 ahead to the goal on the other's side, "
+      "so that their straight tracks cross at the same instant (492.4 each, the paper's 985.5/2 at "
+      "detour 1.00)";
+  s.ships = {ship("ship1", {300, 150}, {500, 600}, 25.0), ship("ship2", {500, 150}, {300, 600}, 25.0)};
+  s.trials = 20;
+  return s;
+}
+
+DssaScenario dssaSixteenShipScenario() {
+  DssaScenario s;
+  s.name = "sixteen_ships";
+  s.description =
+      "Sec. 5.2: four ships on each side of the area in lanes 100 apart (250, 350, 450, 550), 270 from the "
+      "centre, each crossing 540 to the opposite side; ships from opposite sides share lanes (head-on), "
+      "ships from adjacent sides cross orthogonally";
+  const double lanes[4] = {250, 350, 450, 550};
+  const double near = 130, far = 670;
+  int k = 0;
+  for (double l : lanes) {
+    s.ships.push_back(ship("w" + std::to_string(k), {near, l}, {far, l}, 25.0));  // from the left (west)
+    s.ships.push_back(ship("e" + std::to_string(k), {far, l}, {near, l}, 25.0));  // from the right
+    s.ships.push_back(ship("s" + std::to_string(k), {l, near}, {l, far}, 25.0));  // from below
+    s.ships.push_back(ship("n" + std::to_string(k), {l, far}, {l, near}, 25.0));  // from above
+    ++k;
+  }
+  s.trials = 50;
+  return s;
+}
+
+DssaScenario dssaThreeShipScenario() {
+  DssaScenario s;
+  s.name = "three_ships";
+  s.description =
+      "Sec. 5.3: three ships in line northbound, the fastest (25) at the back at y = 0, the 10 at y = 100, "
+      "the 5 at the head at y = 250; goals on the same line at 800, 700 and 520 (straight 800 + 600 + 270 "
+      "= 1670, travel 32 + 60 + 54: the paper's 1709/1.02 and 49.6 x 3 / 1.02)";
+  s.ships = {ship("fast", {400, 0}, {400, 800}, 25.0), ship("medium", {400, 100}, {400, 700}, 10.0),
+             ship("slow", {400, 250}, {400, 520}, 5.0)};
+  s.trials = 20;
+  return s;
+}
+
+std::vector<DssaScenario> dssaPaperScenarios() {
+  return {dssaTwoShipScenario(), dssaSixteenShipScenario(), dssaThreeShipScenario()};
+}
+
+std::vector<std::string> dssaPaperVariants() {
+  return {"dssa", "dssa_plus_sc", "dssa_plus_cs", "dssa_plus_eq"};
+}
+
+std::string dssaVariantLabel(const std::string& v) {
+  if (v == "dssa")
+    return "DSSA";
+  if (v == "dssa_plus_sc")
+    return "DSSA+ s>c";
+  if (v == "dssa_plus_cs")
+    return "DSSA+ s<c";
+  if (v == "dssa_plus_eq" || v == "dssa_plus")
+    return "DSSA+ s=c";
+  return v;
+}
+
+DssaPaperFigures dssaPaperFigures(const std::string& scenario, const std::string& variant) {
+  // Tables 1-3 of the paper, columns DSSA, DSSA+ s>c, s<c, s=c.
+  struct Row {
+    const char* scenario;
+    DssaPaperFigures f[4];
+  };
+  static const Row rows[] = {
+      {"two_ships",
+       {{1150.0, 23.0, 1.17, 20, 20},
+        {985.5, 22.7, 1.00, 20, 20},
+        {1154.0, 25.0, 1.17, 20, 20},
+        {1154.0, 25.0, 1.17, 20, 20}}},
+      {"sixteen_ships",
+       {{9833.6, 24.6, 1.14, 32, 50},
+        {8693.4, 33.2, 1.01, 50, 50},
+        {9816.9, 26.5, 1.15, 47, 50},
+        {9096.4, 25.3, 1.06, 49, 50}}},
+      {"three_ships",
+       {{1709.0, 49.6, 1.02, 20, 20},
+        {1702.0, 59.3, 1.01, 1, 20},
+        {1713.5, 51.4, 1.02, 20, 20},
+        {1705.9, 49.5, 1.01, 17, 20}}},
+  };
+  const auto vars = dssaPaperVariants();
+  int col = -1;
+  for (std::size_t i = 0; i < vars.size(); ++i)
+    if (vars[i] == variant || (variant == "dssa_plus" && vars[i] == "dssa_plus_eq"))
+      col = static_cast<int>(i);
+  for (const auto& r : rows)
+    if (scenario == r.scenario && col >= 0)
+      return r.f[col];
+  return {};
+}
+
+DssaRunResult runDssaSimulation(const DssaScenario& scenario, const DssaConfig& config, uint64_t seed,
+                                const DssaSimOptions& options) {
+  const std::size_t n = scenario.ships.size();
+  const double dt = config.time_step;
+  const double collide =
+      options.collision_distance > 0.0 ? options.collision_distance : config.collision_distance;
+
+  struct Ship {
+    ShipState state;
+    bool active = true;
+  };
+  std::vector<Ship> ships(n);
+  DssaRunResult res;
+  res.ships.resize(n);
+  res.min_separation = std::numeric_limits<double>::infinity();
+
+  // Agents live for the whole run, so a ship's last known intentions of the others carry over.
+  std::vector<DssaAgent> agents;
+  std::vector<std::mt19937_64> rngs;
+  for (std::size_t i = 0; i < n; ++i) {
+    const DssaSimShip& s = scenario.ships[i];
+    ships[i].state.id = s.name;
+    ships[i].state.position = s.start;
+    ships[i].state.course = trueBearing(s.start, s.goal);
+    ships[i].state.heading = ships[i].state.course;
+    ships[i].state.speed = s.speeds.ref;
+    res.ships[i].straight = (s.goal - s.start).norm();
+    if (options.record_trajectories)
+      res.ships[i].trajectory.push_back(s.start);
+    agents.emplace_back(static_cast<int>(i), config, s.speeds);
+    rngs.emplace_back(dssaAgentSeed(seed, static_cast<int>(i)));
+  }
+  const DssaExchange exchange(config);
+  long rounds_total = 0;
+
+  int step = 0;
+  for (; step < options.max_steps && !agents.empty(); ++step) {
+    const double now = step * dt;
+    for (auto& a : agents)
+      a.setOwn(ships[a.id()].state, scenario.ships[a.id()].goal, now);
+    const DssaExchange::Result x = exchange.run(agents, rngs);
+    bool searched = false;
+    for (const auto& a : agents)
+      searched = searched || a.neighbourCount() > 0;
+    if (searched) {
+      ++res.search_phases;
+      rounds_total += x.rounds;
+      res.max_rounds = std::max(res.max_rounds, x.rounds);
+      if (!x.quiescent)
+        ++res.non_quiescent_phases;
+    }
+
+    // Control phase: each ship moves one step with her intention; arrival ends her move early.
+    const std::size_t m = agents.size();
+    std::vector<Eigen::Vector2d> p0(m), v(m);
+    std::vector<double> frac(m, 1.0);
+    std::vector<bool> arrived(m, false);
+    std::vector<std::size_t> docking;
+    for (std::size_t k = 0; k < m; ++k) {
+      const int i = agents[k].id();
+      const DssaIntention& in = agents[k].intention();
+      p0[k] = ships[i].state.position;
+      v[k] = in.intendedVelocity();
+      const Eigen::Vector2d goal = scenario.ships[i].goal;
+      const double len = v[k].norm() * dt;
+      const double to_goal = (goal - p0[k]).norm();
+      if (len > 0.0) {
+        const Eigen::Vector2d u = v[k] * dt / len;
+        const double along = std::min(std::max((goal - p0[k]).dot(u), 0.0), len);
+        if ((p0[k] + u * along - goal).norm() <= options.goal_tolerance) {
+          arrived[k] = true;
+          frac[k] = along / len;
+        }
+      }
+      if (!arrived[k] && to_goal <= std::max(len, options.goal_tolerance))
+        docking.push_back(k);
+    }
+    // The goal is within this move but off her intended track. With a 45 deg turn per step at full
+    // speed the goal can lie inside her turning circle, and she would circle it for ever; so she makes
+    // straight for it (Fig. 1's control phase moves a ship directly) when that move keeps her clear of
+    // every other ship's intended move over the step, and otherwise keeps her intention.
+    for (std::size_t k : docking) {
+      const Eigen::Vector2d goal = scenario.ships[agents[k].id()].goal;
+      const double to_goal = (goal - p0[k]).norm();
+      const double speed = std::max(v[k].norm(), to_goal / dt);
+      const Eigen::Vector2d vd =
+          to_goal > 0.0 ? Eigen::Vector2d((goal - p0[k]) / to_goal * speed) : Eigen::Vector2d::Zero();
+      const double fd = speed > 0.0 ? to_goal / (speed * dt) : 0.0;
+      bool clear = true;
+      for (std::size_t j = 0; j < m && clear; ++j)
+        if (j != k && minDistance(p0[k], vd, p0[j], v[j], std::min(fd, frac[j]) * dt) < collide)
+          clear = false;
+      if (clear) {
+        arrived[k] = true;
+        frac[k] = fd;
+        v[k] = vd;
+      }
+    }
+    for (std::size_t a = 0; a < m; ++a)
+      for (std::size_t b = a + 1; b < m; ++b) {
+        const double d = minDistance(p0[a], v[a], p0[b], v[b], std::min(frac[a], frac[b]) * dt);
+        res.min_separation = std::min(res.min_separation, d);
+        if (d < collide)
+          res.collision = true;
+      }
+    for (std::size_t k = 0; k < m; ++k) {
+      const int i = agents[k].id();
+      const DssaIntention& in = agents[k].intention();
+      ShipState& st = ships[i].state;
+      const Eigen::Vector2d p1 = arrived[k] ? scenario.ships[i].goal : Eigen::Vector2d(p0[k] + v[k] * dt);
+      res.ships[i].path_length += (p1 - p0[k]).norm();
+      st.position = p1;
+      st.course = in.course;
+      st.heading = in.course;
+      st.speed = in.speed;
+      if (options.record_trajectories)
+        res.ships[i].trajectory.push_back(p1);
+      if (arrived[k]) {
+        res.ships[i].arrived = true;
+        res.ships[i].travel_time = now + frac[k] * dt;
+      }
+    }
+    // Arrived ships leave; the others forget them so that no stale intention lingers.
+    for (std::size_t k = m; k-- > 0;)
+      if (arrived[k]) {
+        const int id = agents[k].id();
+        agents.erase(agents.begin() + static_cast<std::ptrdiff_t>(k));
+        rngs.erase(rngs.begin() + static_cast<std::ptrdiff_t>(k));
+        for (auto& a : agents)
+          a.forget(id);
+      }
+    if (res.collision) {
+      ++step;
+      break;
+    }
+  }
+  res.steps = step;
+  res.mean_rounds = res.search_phases > 0 ? static_cast<double>(rounds_total) / res.search_phases : 0.0;
+  bool all_arrived = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    DssaShipResult& r = res.ships[i];
+    all_arrived = all_arrived && r.arrived;
+    r.detour_rate = r.straight > 0.0 ? r.path_length / r.straight : 1.0;
+    res.total_path_length += r.path_length;
+    res.mean_travel_time += r.travel_time / n;
+    res.mean_detour_rate += r.detour_rate / n;
+  }
+  res.success = all_arrived && !res.collision;
+  return res;
+}
+
+DssaExperimentSummary runDssaExperiment(const DssaScenario& scenario, const std::string& variant, int trials,
+                                        uint64_t seed, const DssaSimOptions& options) {
+  const DssaConfig config = DssaConfig::preset(variant);
+  DssaExperimentSummary s;
+  s.scenario = scenario.name;
+  s.variant = variant;
+  s.trials = trials;
+  s.min_separation = std::numeric_limits<double>::infinity();
+  double rounds = 0;
+  for (int k = 0; k < trials; ++k) {
+    const DssaRunResult r = runDssaSimulation(scenario, config, seed + static_cast<uint64_t>(k), options);
+    s.min_separation = std::min(s.min_separation, r.min_separation);
+    s.collisions += r.collision ? 1 : 0;
+    rounds += r.mean_rounds;
+    s.non_quiescent_phases += r.non_quiescent_phases;
+    if (!r.success)
+      continue;
+    ++s.successes;
+    s.total_path_length += r.total_path_length;
+    s.travel_time += r.mean_travel_time;
+    s.detour_rate += r.mean_detour_rate;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  s.total_path_length = s.successes ? s.total_path_length / s.successes : nan;
+  s.travel_time = s.successes ? s.travel_time / s.successes : nan;
+  s.detour_rate = s.successes ? s.detour_rate / s.successes : nan;
+  s.mean_rounds = trials > 0 ? rounds / trials : 0.0;
+  return s;
+}
+
+}  // namespace asv

@@ -1,0 +1,258 @@
+#include "asv_core/planning/plan_follower.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace asv {
+
+void PlanFollowerConfig::validate() const {
+  if (!(cruise_speed >= 0.0 && replan_period > 0 && min_replan_interval >= 0 && time_budget > 0 &&
+        waypoint_acceptance > 0 && fallback_speed_factor >= 0 && fallback_speed_factor <= 1 &&
+        extremis_range >= 0 && plan_clearance >= 0 && prediction_horizon > 0 && limits.max_speed > 0 &&
+        min_separation >= 0 && risk_clear_time >= 0 && limits.min_speed >= 0 &&
+        limits.min_speed <= limits.max_speed && limits.turn_rate > 0 && limits.turn_delay >= 0))
+    throw std::invalid_argument("plan follower: a parameter is out of range (see planner_node.yaml)");
+}
+
+PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
+  PlanFollowerConfig c;
+  c.cruise_speed = p.getDouble("cruise_speed", c.cruise_speed);
+  c.replan_period = p.getDouble("replan_period", c.replan_period);
+  c.min_replan_interval = p.getDouble("min_replan_interval", c.min_replan_interval);
+  c.time_budget = p.getDouble("time_budget", c.time_budget);
+  c.waypoint_acceptance = p.getDouble("waypoint_acceptance", c.waypoint_acceptance);
+  c.fallback_speed_factor = p.getDouble("fallback_speed_factor", c.fallback_speed_factor);
+  c.extremis_range = p.getDouble("extremis_range", c.extremis_range);
+  c.plan_clearance = p.getDouble("plan_clearance", c.plan_clearance);
+  c.prediction_horizon = p.getDouble("prediction_horizon", c.prediction_horizon);
+  c.seed = p.getInt("seed", c.seed);
+  c.min_separation = p.getDouble("min_separation", c.min_separation);
+  c.stand_on_policy = p.getBool("stand_on_policy", c.stand_on_policy);
+  c.risk_clear_time = p.getDouble("risk_clear_time", c.risk_clear_time);
+  c.limits.max_speed = p.getDouble("max_speed", c.limits.max_speed);
+  c.limits.min_speed = p.getDouble("min_speed", c.limits.min_speed);
+  c.limits.turn_rate = p.getDouble("turn_rate", c.limits.turn_rate);
+  c.limits.turn_delay = p.getDouble("turn_delay", c.limits.turn_delay);
+  c.validate();
+  return c;
+}
+
+bool riskBlindPlanning(bool risk_fresh, double now, double first_input, double stale_after) {
+  return !risk_fresh && first_input >= 0.0 && now - first_input >= stale_after;
+}
+
+bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {
+  if (plan.status != PlanStatus::Ok || !std::isfinite(plan.course_setpoint))
+    return false;
+  return std::remainder(plan.course_setpoint - problem.own.course, 2 * kPi) < -degToRad(5.0);
+}
+
+Plan planObservingGiveWay(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
+                          int retries) {
+  bool give_way = false;
+  for (const auto& t : problem.targets)
+    give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
+  Plan first = make(problem);
+  if (!give_way || !firstAlterationToPort(first, problem))
+    return first;
+  for (int k = 1; k <= retries; ++k) {
+    problem.seed += 0x9E3779B9ULL * static_cast<uint64_t>(k);
+    Plan again = make(problem);
+    if (!firstAlterationToPort(again, problem)) {
+      again.message += " (retry " + std::to_string(k) + ": the first plan altered to port, Rules 14/15)";
+      again.compute_time += first.compute_time;
+      return again;
+    }
+  }
+  first.message += " (port alteration kept: no starboard plan in " + std::to_string(retries) + " retries)";
+  return first;
+}
+
+PlanFollower::PlanFollower(const PlanFollowerConfig& config) : cfg_(config) {
+  cfg_.validate();
+}
+
+void PlanFollower::updateOwn(const ShipState& own) {
+  if (!own_ && cfg_.cruise_speed <= 0.0)
+    cfg_.cruise_speed = std::max(0.5, own.speed);
+  own_ = own;
+}
+
+PlanningProblem PlanFollower::buildProblem(double now, const std::vector<PlannerTarget>& targets) const {
+  PlanningProblem pr;
+  pr.time = now;
+  pr.own = *own_;
+  pr.own.speed = std::max(pr.own.speed, cfg_.cruise_speed);  // plan for the cruising speed
+  pr.limits = cfg_.limits;
+  pr.goal = goal_ ? *goal_ : own_->position + courseSpeedToVelocity(own_->course, 20000.0);
+  pr.obstacles = obstacles_;
+  pr.seed = static_cast<uint64_t>(cfg_.seed) + replans_;
+  pr.time_budget = cfg_.time_budget;
+  pr.min_separation = cfg_.min_separation;
+  for (const auto& t : targets) {
+    if (t.state.id == own_->id || !t.state.finite())
+      continue;
+    // Rule 17(a)(i): the stand-on ship keeps course and speed while the give-way ship is expected to
+    // act (Hu's compliance flag) and the situation is not yet urgent (17(a)(ii), 17(b): then it acts).
+    if (cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent)
+      continue;
+    pr.targets.push_back(t);
+  }
+  return pr;
+}
+
+Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std::string& why) const {
+  Plan f;
+  f.status = PlanStatus::Fallback;
+  f.course_setpoint = own_->course;
+  f.speed_setpoint = cfg_.cruise_speed * cfg_.fallback_speed_factor;
+  f.message = "fallback (" + why + "): hold course, slow to " + std::to_string(cfg_.fallback_speed_factor) +
+              " of speed";
+  for (const auto& t : targets)
+    if (t.risk == RiskLevel::Urgent && (t.state.position - own_->position).norm() < cfg_.extremis_range) {
+      // In extremis (Rule 17(b), Rule 2(b)): hard to starboard at full speed.
+      f.course_setpoint = wrapTwoPi(own_->course + kPi / 2);
+      f.speed_setpoint = cfg_.cruise_speed;
+      f.message = "fallback (" + why + "): in extremis with " + t.state.id + ", hard starboard";
+      break;
+    }
+  return f;
+}
+
+double PlanFollower::predictedClearance(const std::vector<PlannerTarget>& targets) const {
+  // The rest of the current plan flown at its speed from where the ship is now, against every target
+  // holding its course and speed: the smallest distance over the next prediction_horizon.
+  if (!own_ || targets.empty())
+    return 1e12;
+  std::vector<Eigen::Vector2d> route{own_->position};
+  for (size_t i = wp_index_; i < plan_.waypoints.size(); ++i)
+    route.push_back(plan_.waypoints[i].position);
+  if (plan_.waypoints.size() < 2 || plan_.status == PlanStatus::Fallback)
+    route.push_back(own_->position + courseSpeedToVelocity(course_sp_, 1e5));
+  const double speed = std::max(0.1, speed_sp_ > 0.0 ? speed_sp_ : cfg_.cruise_speed);
+  const double dt = 5.0;
+  double best = 1e12;
+  size_t leg = 1;
+  Eigen::Vector2d p = route[0];
+  for (double t = 0.0; t <= cfg_.prediction_horizon && leg < route.size(); t += dt) {
+    for (const auto& tg : targets) {
+      if (tg.state.id == own_->id)
+        continue;
+      const Eigen::Vector2d q = tg.state.position + tg.state.velocity() * t;
+      best = std::min(best, (q - p).norm());
+    }
+    double step = speed * dt;
+    while (step > 0.0 && leg < route.size()) {
+      const Eigen::Vector2d d = route[leg] - p;
+      if (d.norm() <= step) {
+        step -= d.norm();
+        p = route[leg++];
+      } else {
+        p += d.normalized() * step;
+        step = 0.0;
+      }
+    }
+  }
+  return best;
+}
+
+bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why) {
+  if (!have_plan_)
+    return why = "first plan", true;
+  const double since = now - last_plan_time_;
+  if (since < cfg_.min_replan_interval)
+    return false;
+  for (const auto& t : targets) {
+    auto it = known_levels_.find(t.state.id);
+    if (t.risk == RiskLevel::None) {
+      // The risk has cleared once it stays none, with the CPA past, for risk_clear_time: a new one
+      // later is news again. A risk that falls while the CPA is still ahead is the plan working (or
+      // tracking noise round Hu's d_min), not a new encounter: it does not re-arm the trigger.
+      if (it != known_levels_.end() && t.tcpa > 0.0) {
+        none_since_.erase(t.state.id);
+        continue;
+      }
+      if (it != known_levels_.end()) {
+        auto since = none_since_.emplace(t.state.id, now).first;
+        if (now - since->second >= cfg_.risk_clear_time) {
+          known_levels_.erase(it);
+          none_since_.erase(since);
+        }
+      }
+      continue;
+    }
+    none_since_.erase(t.state.id);
+    const RiskLevel before = it == known_levels_.end() ? RiskLevel::None : it->second;
+    // Only rises replan: a level that falls (or flickers round a threshold) would make the ship dither.
+    if (static_cast<int>(t.risk) > static_cast<int>(before)) {
+      why = "risk of " + t.state.id + " " + std::to_string(static_cast<int>(before)) + " -> " +
+            std::to_string(static_cast<int>(t.risk));
+      return true;
+    }
+  }
+  // A plan is kept while it stays safe; periodic replanning of a safe plan would only make the ship weave.
+  // The bar is plan_clearance, raised to the situation's minimum separation when there is one: a plan
+  // predicted to pass inside the distance the situation demands is not safe.
+  const double clearance = predictedClearance(targets);
+  if (clearance < std::max(cfg_.plan_clearance, cfg_.min_separation)) {
+    why = "plan predicted to pass within " + std::to_string(static_cast<int>(clearance)) + " m";
+    return true;
+  }
+  if (since >= cfg_.replan_period && plan_.status != PlanStatus::Ok)
+    return why = "periodic (last plan not ok)", true;
+  return false;
+}
+
+const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<PlannerTarget>& targets,
+                                     const std::string& why) {
+  if (plan.status == PlanStatus::NoSolution) {
+    const double compute = plan.compute_time;
+    plan = fallback(targets, "no solution: " + plan.message);
+    plan.compute_time = compute;
+  }
+  if (plan.status == PlanStatus::Fallback)
+    ++fallbacks_;
+  (void)why;
+  plan_ = std::move(plan);
+  have_plan_ = true;
+  wp_index_ = 1;
+  last_plan_time_ = now;
+  ++replans_;
+  for (const auto& t : targets) {
+    RiskLevel& known = known_levels_[t.state.id];
+    if (static_cast<int>(t.risk) > static_cast<int>(known))
+      known = t.risk;
+  }
+  return plan_;
+}
+
+bool PlanFollower::setpoint(double& course_out, double& speed_out) {
+  if (!have_plan_ || !own_)
+    return false;
+  const Eigen::Vector2d p = own_->position;
+  double course = plan_.course_setpoint, speed = plan_.speed_setpoint;
+  const auto& wps = plan_.waypoints;
+  if (plan_.status != PlanStatus::Fallback && wps.size() >= 2) {
+    while (wp_index_ < wps.size() && (wps[wp_index_].position - p).norm() < cfg_.waypoint_acceptance)
+      ++wp_index_;
+    if (wp_index_ < wps.size()) {
+      course = courseOf(wps[wp_index_].position - p);
+      if (wps[wp_index_].speed > 0.0)
+        speed = wps[wp_index_].speed;
+    } else if (goal_) {
+      course = courseOf(*goal_ - p);  // past the plan: back to the goal
+    }
+  }
+  if (!(speed > 0.0) && plan_.status != PlanStatus::Fallback)
+    speed = cfg_.cruise_speed;
+  if (!std::isfinite(course) || !std::isfinite(speed))
+    return false;
+  course_sp_ = wrapTwoPi(course);
+  speed_sp_ = std::clamp(speed, 0.0, cfg_.limits.max_speed);
+  course_out = course_sp_;
+  speed_out = speed_sp_;
+  return true;
+}
+
+}  // namespace asv
