@@ -9,6 +9,7 @@
 #include <asv_core/common/units.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
+#include <asv_ros/conversions.h>
 #include <asv_ros/params.h>
 #include <nav_msgs/Path.h>
 #include <tf2/utils.h>
@@ -22,13 +23,6 @@ namespace {
 
 const std::set<std::string> kExchangeKeys = {"topic",          "round_timeout",      "forget_after",
                                              "arrival_radius", "drop_outgoing_from", "drop_outgoing_until"};
-
-geometry_msgs::Quaternion yawQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(yaw / 2);
-  q.w = std::cos(yaw / 2);
-  return q;
-}
 
 }  // namespace
 
@@ -394,7 +388,7 @@ void DssaRosAgent::publishCommand(double course, double speed, double search_tim
     ps.header = sp.header;
     ps.header.stamp = now + ros::Duration(w.time);
     ps.pose.position = w.position;
-    ps.pose.orientation = yawQuaternion(asv::courseToYaw(course_sp_));
+    ps.pose.orientation = asv_ros::yawToQuaternion(asv::courseToYaw(course_sp_));
     path.poses.push_back(ps);
   }
   plan.course_setpoint = course_sp_;

@@ -12,6 +12,7 @@
 #include <asv_core/sim/scenario.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
+#include <asv_ros/conversions.h>
 #include <asv_ros/params.h>
 #include <nav_msgs/Path.h>
 #include <tf2/utils.h>
@@ -193,23 +194,17 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
 }
 
 void PlannerNode::checkClock() {
-  if (!clock_.jumpedBack(ros::Time::now().toSec()))
-    return;
-  ROS_WARN(
-      "planner_node: time went back %.1f s (a looping bag or a restarted clock): own ship, targets, "
-      "risk and plan dropped",
-      clock_.lastJump());
-  own_.reset();
-  first_input_ = -1.0;
-  risk_.reset();
-  targets_.reset();
-  follower_ = std::make_unique<asv::PlanFollower>(follower_config_);
-  if (params_.has_goal)
-    follower_->setGoal(params_.goal);
-  follower_->setObstacles(obstacles_);
-  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
-  // caught up with the time before the jump.
-  updater_.force_update();
+  asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
+    own_.reset();
+    first_input_ = -1.0;
+    risk_.reset();
+    targets_.reset();
+    follower_ = std::make_unique<asv::PlanFollower>(follower_config_);
+    if (params_.has_goal)
+      follower_->setGoal(params_.goal);
+    follower_->setObstacles(obstacles_);
+    return std::string("own ship, targets, risk and plan dropped");
+  });
 }
 
 void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
@@ -363,9 +358,7 @@ void PlannerNode::publishPlan() {
     ps.header = m.header;
     ps.header.stamp = plan_stamp_ + ros::Duration(std::max(0.0, w.time));
     ps.pose.position = pw.position;
-    const double yaw = asv::courseToYaw(w.course);
-    ps.pose.orientation.z = std::sin(yaw / 2);
-    ps.pose.orientation.w = std::cos(yaw / 2);
+    ps.pose.orientation = asv_ros::yawToQuaternion(asv::courseToYaw(w.course));
     path.poses.push_back(ps);
     line.points.push_back(pw.position);
   }

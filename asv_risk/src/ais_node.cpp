@@ -5,6 +5,7 @@
 #include <set>
 
 #include <asv_core/common/units.h>
+#include <asv_ros/conversions.h>
 
 #include "asv_risk/params.h"
 #include "asv_risk/target_quality.h"
@@ -116,17 +117,12 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 }
 
 void AisNode::checkClock() {
-  if (!clock_.jumpedBack(ros::Time::now().toSec()))
-    return;
-  ROS_WARN(
-      "ais_node: time went back %.1f s (a looping bag or a restarted clock): %zu ships and the "
-      "pending fragments forgotten",
-      clock_.lastJump(), ships_.size());
-  ships_.clear();
-  decoder_.clearPending();
-  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
-  // caught up with the time before the jump.
-  updater_.force_update();
+  asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
+    const std::string what = std::to_string(ships_.size()) + " ships and the pending fragments forgotten";
+    ships_.clear();
+    decoder_.clearPending();
+    return what;
+  });
 }
 
 void AisNode::handleLine(const std::string& line, const ros::Time& stamp) {

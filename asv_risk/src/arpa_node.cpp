@@ -5,6 +5,7 @@
 #include <set>
 
 #include <asv_core/common/units.h>
+#include <asv_ros/conversions.h>
 
 #include "asv_risk/params.h"
 #include "asv_risk/target_quality.h"
@@ -113,17 +114,12 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 }
 
 void ArpaNode::checkClock() {
-  if (!clock_.jumpedBack(ros::Time::now().toSec()))
-    return;
-  ROS_WARN(
-      "arpa_node: time went back %.1f s (a looping bag or a restarted clock): %zu radar targets and "
-      "the own ship forgotten",
-      clock_.lastJump(), radars_.size());
-  radars_.clear();
-  has_odom_ = has_osd_heading_ = false;
-  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
-  // caught up with the time before the jump.
-  updater_.force_update();
+  asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
+    const std::string what = std::to_string(radars_.size()) + " radar targets and the own ship forgotten";
+    radars_.clear();
+    has_odom_ = has_osd_heading_ = false;
+    return what;
+  });
 }
 
 void ArpaNode::handleLine(const std::string& line, const ros::Time& stamp) {

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include <asv_ros/conversions.h>
 #include <asv_ros/params.h>
 #include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
@@ -152,17 +153,11 @@ bool RiskNode::transformToWorking(const std::string& frame, const ros::Time& sta
 }
 
 void RiskNode::checkClock() {
-  if (!clock_.jumpedBack(ros::Time::now().toSec()))
-    return;
-  ROS_WARN(
-      "risk_node: time went back %.1f s (a looping bag or a restarted clock): own ship and "
-      "compliance histories reset",
-      clock_.lastJump());
-  own_.reset();
-  assessor_.reset();
-  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
-  // caught up with the time before the jump.
-  updater_.force_update();
+  asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
+    own_.reset();
+    assessor_.reset();
+    return std::string("own ship and compliance histories reset");
+  });
 }
 
 void RiskNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {

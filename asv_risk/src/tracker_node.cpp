@@ -5,6 +5,7 @@
 #include <set>
 
 #include <asv_core/common/units.h>
+#include <asv_ros/conversions.h>
 
 #include "asv_risk/params.h"
 #include "asv_risk/target_quality.h"
@@ -234,17 +235,13 @@ asv_msgs::Target TrackerNode::toMsg(const asv::TrackEstimate& e) const {
 }
 
 bool TrackerNode::checkClock(const ros::Time& now) {
-  if (!clock_.jumpedBack(now.toSec()))
-    return false;
-  ROS_WARN("tracker: time went back %.1f s (a looping bag or a restarted clock): %zu tracks dropped",
-           clock_.lastJump(), tracker_.tracks().size());
-  tracker_.clear();
-  ais_meta_.clear();
-  arpa_meta_.clear();
-  // diagnostic_updater schedules by ROS time: without this it would stay silent until the clock
-  // caught up with the time before the jump.
-  updater_.force_update();
-  return true;
+  return asv_ros::resetOnClockJump(clock_, updater_, now, [this] {
+    const std::string what = std::to_string(tracker_.tracks().size()) + " tracks dropped";
+    tracker_.clear();
+    ais_meta_.clear();
+    arpa_meta_.clear();
+    return what;
+  });
 }
 
 void TrackerNode::publish() {

@@ -41,7 +41,8 @@ double lockstepTimeout() {
   double t = 30.0;
   getParam(ros::NodeHandle(), "/lockstep_timeout", t);
   if (!(t > 0.0 && std::isfinite(t)))
-    throw std::invalid_argument("parameter '/lockstep_timeout' must be a finite number of seconds > 0 (default 30)");
+    throw std::invalid_argument(
+        "parameter '/lockstep_timeout' must be a finite number of seconds > 0 (default 30)");
   return t;
 }
 

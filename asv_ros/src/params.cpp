@@ -2,8 +2,8 @@
 
 namespace asv_ros {
 
-void checkUnknownParams(const ros::NodeHandle& nh, const std::set<std::string>& known, const std::string& yaml,
-                        const std::vector<std::string>& subtrees) {
+void checkUnknownParams(const ros::NodeHandle& nh, const std::set<std::string>& known,
+                        const std::string& yaml, const std::vector<std::string>& subtrees) {
   std::vector<std::string> names;
   if (!ros::param::getParamNames(names))
     throw std::runtime_error("cannot list the parameter server's names (is the master running?)");

@@ -14,6 +14,7 @@
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/SimEvent.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/conversions.h>
 #include <asv_ros/lockstep.h>
 #include <asv_ros/params.h>
 #include <geometry_msgs/TransformStamped.h>
@@ -72,13 +73,6 @@ const std::set<std::string> kKnownParams = {"scenario",
                                             "radar_dropout",
                                             "ais_dropout",
                                             "static_interval"};
-
-geometry_msgs::Quaternion yawQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(yaw / 2.0);
-  q.w = std::cos(yaw / 2.0);
-  return q;
-}
 
 }  // namespace
 
@@ -266,7 +260,7 @@ void SimNode::publishState(bool odom, bool ships) {
       o.child_frame_id = v.name + "/base_link";
       o.pose.pose.position.x = s.x;
       o.pose.pose.position.y = s.y;
-      o.pose.pose.orientation = yawQuaternion(yaw);
+      o.pose.pose.orientation = asv_ros::yawToQuaternion(yaw);
       // REP 103 body frame: x forward, y left, z up; the core's sway is positive to starboard and its
       // yaw rate positive clockwise.
       o.twist.twist.linear.x = s.u;
@@ -313,7 +307,7 @@ void SimNode::publishState(bool odom, bool ships) {
       m.id = static_cast<int>(i);
       m.type = visualization_msgs::Marker::CUBE;
       m.pose.position = t.position;
-      m.pose.orientation = yawQuaternion(yaw);
+      m.pose.orientation = asv_ros::yawToQuaternion(yaw);
       // Drawn at least 500 m long so that ships stay visible at scenario scale (rviz/asv.rviz: 0.06 px/m).
       const double scale = std::max(1.0, 500.0 / std::max(1.0, v.length));
       m.scale.x = v.length * scale;

@@ -17,8 +17,8 @@ namespace asv_ros {
 // `known` (keys relative to that namespace, nested ones as "exchange/topic") and not under one of
 // `subtrees` ("evaluation/": a subtree another reader checks). `yaml` is the file that documents the
 // keys, for the message.
-void checkUnknownParams(const ros::NodeHandle& nh, const std::set<std::string>& known, const std::string& yaml,
-                        const std::vector<std::string>& subtrees = {});
+void checkUnknownParams(const ros::NodeHandle& nh, const std::set<std::string>& known,
+                        const std::string& yaml, const std::vector<std::string>& subtrees = {});
 
 // Reads `key` into `value` when it is set, keeping `value` (the default) otherwise. A value of the
 // wrong type is std::invalid_argument. An integer is accepted for a double (roscpp converts it), not

@@ -1,0 +1,25 @@
+#include "asv_ros/conversions.h"
+
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
+namespace asv_ros {
+
+geometry_msgs::Quaternion yawToQuaternion(double yaw) {
+  tf2::Quaternion q;
+  q.setRPY(0.0, 0.0, yaw);
+  return tf2::toMsg(q);
+}
+
+bool resetOnClockJump(asv::ClockJumpDetector& clock, diagnostic_updater::Updater& updater,
+                      const ros::Time& now, const std::function<std::string()>& reset) {
+  if (!clock.jumpedBack(now.toSec()))
+    return false;
+  const std::string forgotten = reset();
+  ROS_WARN("%s: time went back %.1f s (a looping bag or a restarted clock): %s",
+           ros::this_node::getName().c_str(), clock.lastJump(), forgotten.c_str());
+  updater.force_update();
+  return true;
+}
+
+}  // namespace asv_ros
