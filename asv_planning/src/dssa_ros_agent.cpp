@@ -14,7 +14,6 @@
 #include <nav_msgs/Path.h>
 #include <tf2/utils.h>
 
-#include "asv_planning/algorithm_plugin.h"
 #include "asv_planning/odometry.h"
 
 namespace asv_planning {
@@ -51,16 +50,17 @@ bool DssaRosAgent::wanted(const std::string& planner, const ros::NodeHandle& pnh
   return distributed && (planner == "dssa" || planner == "dssa_plus");
 }
 
-asv::DssaConfig DssaRosAgent::configOf(PlannerPlugin& plugin) {
-  // The dssa and dssa_plus plugins are AlgorithmPlugins over an asv::DssaPlanner (plugins.cpp); asking
-  // the loaded plugin keeps its sea-scale defaults in one place.
+asv::DssaConfig DssaRosAgent::configOf(const PlannerPlugin& plugin) {
+  // The loaded plugin's parameters (its sea-scale defaults and the node's keys): the agents plan
+  // exactly as the plugin would. The preset is the plugin's name unless a key sets it, as in
+  // asv::DssaPlanner::configure.
   const std::string name = plugin.name();
   if (name != "dssa" && name != "dssa_plus")
     throw std::invalid_argument("distributed DSSA needs the dssa or dssa_plus plugin, not '" + name + "'");
-  const auto* dssa = dynamic_cast<const asv::DssaPlanner*>(static_cast<AlgorithmPlugin&>(plugin).algorithm());
-  if (!dssa)
-    throw std::invalid_argument("plugin '" + name + "' does not wrap asv::DssaPlanner");
-  return dssa->config();
+  asv::ParamMap params = plugin.parameters();
+  if (!params.has("preset"))
+    params.set("preset", name);
+  return asv::DssaConfig::fromParams(params);
 }
 
 int DssaRosAgent::shipId(const std::string& name) {

@@ -13,6 +13,7 @@ void AlgorithmPlugin::initialize(const std::string& name, const asv::ParamMap& c
   for (const auto& kv : config.values())
     merged.set(kv.first, kv.second);
   algorithm_->configure(merged);
+  parameters_ = merged;
   name_ = name.empty() ? algorithm_->name() : name;
   initialized_ = true;
 }

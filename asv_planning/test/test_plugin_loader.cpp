@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <asv_core/common/units.h>
+#include <asv_core/planning/dssa/dssa.h>
 
 #include "asv_planning/plugin_loader.h"
 
@@ -85,4 +86,24 @@ TEST(PluginLoader, UnknownParameterIsRejected) {
   asv::ParamMap p;
   p.set("antz", "10");
   EXPECT_THROW(loader.load("aco", p), std::invalid_argument);
+}
+
+// The parameters in force are the plugin's defaults with the given keys over them: the distributed
+// DSSA agent builds its algorithm from them, through the interface rather than a cast.
+TEST(PluginLoader, ParametersInForceAreTheDefaultsWithTheGivenKeysOver) {
+  PluginLoader loader;
+  asv::ParamMap given;
+  given.set("time_step", "5");
+  auto plugin = loader.load("dssa_plus", given);
+  const asv::ParamMap p = plugin->parameters();
+  EXPECT_EQ(p.getDouble("time_step", 0.0), 5.0);      // given
+  EXPECT_EQ(p.getDouble("time_window", 0.0), 600.0);  // the sea-scale default (10 minutes)
+  EXPECT_FALSE(p.has("preset"));                      // the plugin's name stands for it
+  asv::ParamMap with_preset = p;
+  with_preset.set("preset", plugin->name());
+  const asv::DssaConfig c = asv::DssaConfig::fromParams(with_preset);
+  EXPECT_EQ(c.time_step, 5.0);
+  EXPECT_TRUE(c.speed_changes);  // DSSA+ changes speed as well as course (Hirayama et al. 2019, Sec. 4)
+  EXPECT_EQ(c.alpha, c.beta);    // the plugin's dssa_plus is the s=c variant, alpha = beta
+  EXPECT_TRUE(loader.load("aco", asv::ParamMap())->parameters().values().empty());  // no defaults of its own
 }

@@ -13,7 +13,7 @@ public:
   void initialize(const std::string& name, const asv::ParamMap& config) override;
   asv::Plan makePlan(const asv::PlanningProblem& problem) override;
   std::string name() const override { return name_; }
-  asv::PlannerAlgorithm* algorithm() { return algorithm_.get(); }
+  asv::ParamMap parameters() const override { return parameters_; }
 
 protected:
   // `defaults`: the plugin's sea-scale defaults where the algorithm's own follow its paper's units;
@@ -24,6 +24,7 @@ protected:
 private:
   std::unique_ptr<asv::PlannerAlgorithm> algorithm_;
   asv::ParamMap defaults_;
+  asv::ParamMap parameters_;
   std::string name_;
   bool initialized_ = false;
 };

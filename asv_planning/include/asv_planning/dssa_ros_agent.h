@@ -98,7 +98,7 @@ public:
   static bool wanted(const std::string& planner, const ros::NodeHandle& pnh);
   // The DssaConfig of a loaded dssa / dssa_plus plugin: its sea-scale defaults, the scenario's
   // planner_params and ~<planner>/ merged and validated. Throws std::invalid_argument for other plugins.
-  static asv::DssaConfig configOf(PlannerPlugin& plugin);
+  static asv::DssaConfig configOf(const PlannerPlugin& plugin);
   // DssaIntention.id of a ship name: 31-bit FNV-1a, the same on every machine.
   static int shipId(const std::string& name);
 

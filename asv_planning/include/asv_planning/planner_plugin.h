@@ -20,6 +20,9 @@ public:
   // Plans for the problem within problem.time_budget; never throws on a feasible problem.
   virtual asv::Plan makePlan(const asv::PlanningProblem& problem) = 0;
   virtual std::string name() const = 0;
+  // The parameters in force since initialize(): the plugin's defaults with the given keys over them.
+  // What a caller needs to build the same algorithm elsewhere (the distributed DSSA agent does).
+  virtual asv::ParamMap parameters() const = 0;
 
 protected:
   PlannerPlugin() = default;
