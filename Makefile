@@ -12,7 +12,8 @@ JOBS ?= 2
 ASAN ?= 1
 BUILD_TYPE ?= Release
 CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
-          -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES=""
+          -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES="" \
+          -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
 DEVEL := source $(CURDIR)/devel/setup.bash
 
 .PHONY: help setup build test bench demo clean format eval eval-ros dssa-results soak test-asan fuzz-long
