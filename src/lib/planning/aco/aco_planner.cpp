@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -531,244 +532,223 @@ void AcoPlanner::configure(const ParamMap& params) {
   cfg_ = AcoConfig::fromParams(params);
 }
 
-Plan AcoPlanner::plan(const PlanningProblem& problem) {
-  const Deadline wall(1e9);
-  diag_ = AcoDiagnostics{};
-  Plan plan;
-  plan.status = PlanStatus::NoSolution;
-  auto fail = [&](const std::string& why) {
-    plan.status = PlanStatus::NoSolution;
-    plan.message = "aco: " + why;
-    plan.course_setpoint = problem.own.course;
-    plan.speed_setpoint = problem.own.speed;
-    plan.compute_time = wall.elapsed();
-    return plan;
-  };
+namespace {
 
-  // --- (1)-(2) input data ---
-  const Eigen::Vector2d goal = finalWaypoint(problem);
+// Steps (1)-(2), the input data: why the problem cannot be planned, or "" when it can.
+std::string badInput(const PlanningProblem& problem, const Eigen::Vector2d& goal) {
   if (!allFinite({problem.own.position.x(), problem.own.position.y(), problem.own.course, problem.own.speed,
                   goal.x(), goal.y()}))
-    return fail("own ship state or final waypoint not finite");
+    return "own ship state or final waypoint not finite";
   for (const auto& t : problem.targets)
     if (!allFinite({t.state.position.x(), t.state.position.y(), t.state.course, t.state.speed}))
-      return fail("target '" + t.state.id + "' has an unknown position, course or speed");
+      return "target '" + t.state.id + "' has an unknown position, course or speed";
   if (!(problem.limits.turn_rate > 0.0) || !std::isfinite(problem.limits.turn_rate) ||
       !(problem.limits.turn_delay >= 0.0) || !std::isfinite(problem.limits.turn_delay))
-    return fail("own-ship limits need turn_rate > 0 and turn_delay >= 0");
-  // Course alterations only (the paper has no speed manoeuvre): the present speed, or the maximum
-  // when the ship is not under way.
-  const double speed = problem.own.speed > 0.1 ? problem.own.speed : problem.limits.max_speed;
-  if (!(speed > 0.0) || !std::isfinite(speed))
-    return fail("own ship has no speed to plan with");
-  const double dist = (goal - problem.own.position).norm();
-  if (dist / cfg_.row_spacing > kMaxRows)
-    return fail("final waypoint too far for the grid (" + fmt("%.0f", dist / cfg_.row_spacing) + " rows)");
+    return "own-ship limits need turn_rate > 0 and turn_delay >= 0";
+  return "";
+}
 
-  HexagonDomainConfig domain = cfg_.domain;
-  if (problem.min_separation > 0.0) {
-    // No side of the hexagon closer than the demanded passing distance (the paper's port and stern
-    // extents, 0.25 nm, are below the 0.5 nm most scenarios ask for). Every extent grows by the same
-    // offset, so the hexagon keeps the paper's asymmetry (starboard 0.35 nm wider than port), which is
-    // what makes ACO pass port to port (Rule 14) and astern of a crossing ship (Rule 15). ACO's best
-    // trajectory grazes the domain boundary and the kinematic turns of eq. (6) flown by the autopilot
-    // cut corners by up to a few hundred metres, so ACO takes a wider margin than the others (1.3, our
-    // choice: 1.1 gave 763 m against a 926 m minimum in the crossing give-way; 1.6 left ACO no path in two
-    // scenarios).
-    const double floor = 1.3 * problem.min_separation;
-    const double smallest = std::min({domain.a, domain.b, domain.c, domain.d, domain.e});
-    if (smallest < floor)
-      for (double* x : {&domain.a, &domain.b, &domain.c, &domain.d, &domain.e})
-        *x += floor - smallest;
-  }
-  const AcoEnvironment env(problem, domain, cfg_.colregs_factor);
-  Search search(problem, cfg_, env, speed);
-  const Motion& m0 = search.initial();
+// The target domain used: no side of the hexagon closer than the demanded passing distance (the
+// paper's port and stern extents, 0.25 nm, are below the 0.5 nm most scenarios ask for). Every extent
+// grows by the same offset, so the hexagon keeps the paper's asymmetry (starboard 0.35 nm wider than
+// port), which is what makes ACO pass port to port (Rule 14) and astern of a crossing ship (Rule 15).
+// ACO's best trajectory grazes the domain boundary and the kinematic turns of eq. (6) flown by the
+// autopilot cut corners by up to a few hundred metres, so ACO takes a wider margin than the other
+// planners: 1.3 x min_separation (our choice; docs/results/aco.md).
+HexagonDomainConfig inflatedDomain(HexagonDomainConfig domain, double min_separation) {
+  if (!(min_separation > 0.0))
+    return domain;
+  const double floor = 1.3 * min_separation;
+  const double smallest = std::min({domain.a, domain.b, domain.c, domain.d, domain.e});
+  if (smallest < floor)
+    for (double* x : {&domain.a, &domain.b, &domain.c, &domain.d, &domain.e})
+      *x += floor - smallest;
+  return domain;
+}
 
-  auto finish = [&](const std::vector<TrajPoint>& traj, double length, const std::string& what) {
-    plan.status = PlanStatus::Ok;
-    plan.waypoints.clear();
-    for (const auto& tp : traj)
-      plan.waypoints.push_back({tp.pos, tp.time, tp.course, speed});
-    // Order times of the alterations (eq. 6): t_m before each turning point.
-    for (size_t i = 1; i + 1 < traj.size(); ++i) {
-      const double alt = wrapPi(traj[i + 1].course - traj[i].course);
-      diag_.command_times.push_back(traj[i].time - search.tm(std::abs(alt)));
-    }
-    // Steer the new course now only when the first alteration is ordered now.
-    plan.course_setpoint = m0.course;
-    if (!diag_.command_times.empty() && diag_.command_times.front() <= 0.5)
-      plan.course_setpoint = traj[2].course;
-    plan.speed_setpoint = speed;
-    plan.cost = length;
-    std::string msg = "aco: " + what + ", " + std::to_string(traj.size() - 1) + " leg(s), length " +
-                      fmt("%.0f m", length) + ", courses";
-    for (size_t i = 1; i < traj.size(); ++i)
-      msg += fmt(" %03.0f", radToDeg(wrapTwoPi(traj[i].course)));
-    plan.message = msg + " deg";
-    plan.compute_time = wall.elapsed();
-    return plan;
-  };
+// Step (5), the ant colony on the construction graph (Lazarowska 2015, Sec. 2.3): pheromone trails on
+// the vertices, ants that walk row by row to the final waypoint, the best path of each iteration kept
+// for the waypoint reduction.
+class Colony {
+public:
+  Colony(const PlanningProblem& problem, const AcoConfig& cfg, const AcoGraph& graph, const Search& search,
+         AcoDiagnostics& diag);
+  // Iterates until cfg.iterations or the deadline (2.3.4). False when no ant reached the goal.
+  bool run(const Deadline& deadline);
+  double bestLength() const { return best_len_; }
+  const std::vector<int>& bestWalk() const { return best_walk_; }
+  // The best path of every iteration: the waypoint reduction is applied to each, because the lattice
+  // length of eq. (9) ranks the staircases, not the straight legs the ship will sail.
+  const std::vector<std::vector<int>>& elite() const { return elite_; }
 
-  if (dist < kMinLegLength) {
-    std::vector<TrajPoint> here{{m0.pos, 0.0, m0.course}};
-    return finish(here, 0.0, "already at the final waypoint");
-  }
-  if (!env.pointStaticFree(m0.pos))
-    return fail("own ship inside a static obstacle or outside the environment boundaries");
-  if (!env.pointStaticFree(goal))
-    return fail("final waypoint inside a static obstacle or outside the environment boundaries");
-  for (size_t j = 0; j < env.targetCount(); ++j)
-    if (env.segmentHitsTarget(j, m0.pos, 0.0, m0.pos, 0.0))
-      return fail("own ship already inside the domain of target '" + problem.targets[j].state.id + "'");
-
-  // --- (3) dangerous targets: those whose domain the unaltered route to the final waypoint enters.
-  // Without any, and with no land in the way, the direct route is the shortest safe trajectory. ---
-  {
-    search.enforceMinFirst(false);
-    Step s;
-    if (search.advance(m0, goal, false, &s, false)) {
-      const Eigen::Vector2d a = m0.pos, b = s.inserted ? s.turn_point : m0.pos;
-      const double tb = s.inserted ? s.turn_time : 0.0;
-      for (size_t j = 0; j < env.targetCount(); ++j)
-        if ((s.inserted && env.segmentHitsTarget(j, a, 0.0, b, tb)) ||
-            env.segmentHitsTarget(j, b, tb, goal, s.next.time))
-          ++diag_.dangerous_targets;
-      if (diag_.dangerous_targets == 0) {
-        std::vector<TrajPoint> traj;
-        double len = 0.0;
-        if (search.trajectory({m0.pos, goal}, &traj, &len)) {
-          diag_.direct_route = true;
-          return finish(traj, len, "no dangerous target, direct route");
-        }
-      }
-    }
-    search.enforceMinFirst(true);
-  }
-
-  // --- (4) construction graph ---
-  const AcoGraph graph(problem, cfg_, env);
-  const int nv = graph.vertexCount(), rows = graph.rows(), k_max = graph.lateralSteps();
-  for (int v = 0; v < nv; ++v)
-    diag_.graph_vertices += graph.inGraph(v);
-  if (!graph.inGraph(graph.startId()))
-    return fail("no statically free way from the own ship to the final waypoint in the grid");
-
-  // --- (5) ACO: data initialisation (2.3.1) ---
-  std::vector<double> tau(nv, cfg_.tau0);
-  std::mt19937_64 rng(problem.seed);
-  // Visibility eta = 1 / distance to the neighbour (2.3.2); a lattice edge's length depends on k only.
-  std::array<double, 2 * kMaxLateralSteps + 1> eta_beta{};
-  for (int k = -k_max; k <= k_max; ++k) {
-    const double len = std::hypot(graph.rowSpacing(), k * graph.columnSpacing());
-    eta_beta[k + k_max] = cfg_.beta == 1.0 ? 1.0 / len : std::pow(1.0 / len, cfg_.beta);
-  }
-  auto tauAlpha = [&](int v) { return cfg_.alpha == 1.0 ? tau[v] : std::pow(tau[v], cfg_.alpha); };
-
-  // The first step leaves the same state for every ant: its feasible moves are computed once.
+private:
   struct Option {
     int vertex;
     int k;
     Motion next;
   };
-  std::vector<Option> first;
-  for (int k = -k_max; k <= k_max; ++k) {
-    if (k < -graph.halfColumns() || k > graph.halfColumns())
-      continue;
-    const int q = graph.id(1, k);
-    Step s;
-    if (graph.inGraph(q) && graph.edgeStaticFree(graph.startId(), k) &&
-        search.advance(m0, graph.position(q), true, &s))
-      first.push_back({q, k, s.next});
+  double tauAlpha(int v) const { return cfg_.alpha == 1.0 ? tau_[v] : std::pow(tau_[v], cfg_.alpha); }
+  int roulette(int n, double total);
+  bool walk(int* w, double* length);
+  int nextOptions(int row, int v, const Motion& m, double* total);
+  void keepIterationBest(int ants_run);
+  void updatePheromone();
+
+  const AcoConfig& cfg_;
+  const AcoGraph& graph_;
+  const Search& search_;
+  AcoDiagnostics& diag_;
+  const int rows_, k_max_;
+  const double straight_;  // [m] the straight distance to the final waypoint
+  std::vector<double> tau_;
+  std::mt19937_64 rng_;
+  std::array<double, 2 * kMaxLateralSteps + 1> eta_beta_{};
+  std::vector<Option> first_;  // the first step's feasible moves, the same for every ant
+  std::vector<int> walks_, best_walk_;
+  std::vector<double> walk_len_;
+  double best_len_ = std::numeric_limits<double>::infinity();
+  std::vector<std::vector<int>> elite_;
+  std::array<Option, 2 * kMaxLateralSteps + 1> cand_;
+  std::array<double, 2 * kMaxLateralSteps + 1> weight_;
+};
+
+// Data initialisation (2.3.1): tau0 on every vertex, visibility eta = 1 / distance to the neighbour
+// (2.3.2; a lattice edge's length depends on k only), and the first step's moves, computed once.
+Colony::Colony(const PlanningProblem& problem, const AcoConfig& cfg, const AcoGraph& graph,
+               const Search& search, AcoDiagnostics& diag)
+    : cfg_(cfg),
+      graph_(graph),
+      search_(search),
+      diag_(diag),
+      rows_(graph.rows()),
+      k_max_(graph.lateralSteps()),
+      straight_((finalWaypoint(problem) - problem.own.position).norm()),
+      tau_(graph.vertexCount(), cfg.tau0),
+      rng_(problem.seed),
+      walks_(static_cast<size_t>(cfg.ants) * graph.rows()),
+      best_walk_(graph.rows()),
+      walk_len_(cfg.ants) {
+  for (int k = -k_max_; k <= k_max_; ++k) {
+    const double len = std::hypot(graph_.rowSpacing(), k * graph_.columnSpacing());
+    eta_beta_[k + k_max_] = cfg_.beta == 1.0 ? 1.0 / len : std::pow(1.0 / len, cfg_.beta);
   }
+  const Motion& m0 = search_.initial();
+  for (int k = -k_max_; k <= k_max_; ++k) {
+    if (k < -graph_.halfColumns() || k > graph_.halfColumns())
+      continue;
+    const int q = graph_.id(1, k);
+    Step s;
+    if (graph_.inGraph(q) && graph_.edgeStaticFree(graph_.startId(), k) &&
+        search_.advance(m0, graph_.position(q), true, &s))
+      first_.push_back({q, k, s.next});
+  }
+}
 
-  const double straight = dist;
-  // Termination by time (2.3.4); a budget <= 0 means none.
-  double budget = problem.time_budget > 0.0 ? problem.time_budget : 1e9;
-  if (cfg_.max_time > 0.0)
-    budget = std::min(budget, cfg_.max_time);
-  const Deadline deadline(budget);
-  std::vector<int> walks(static_cast<size_t>(cfg_.ants) * rows), best_walk(rows);
-  std::vector<double> walk_len(cfg_.ants);
-  double best_len = std::numeric_limits<double>::infinity();
-  // The best path of every iteration: the waypoint reduction is applied to each, because the lattice
-  // length of eq. (9) ranks the staircases, not the straight legs the ship will sail.
-  std::vector<std::vector<int>> elite;
-  std::array<Option, 2 * kMaxLateralSteps + 1> cand;
-  std::array<double, 2 * kMaxLateralSteps + 1> weight;
+// Action choice rule, eq. (7): P_j = tau_j^alpha eta_j^beta / sum over the feasible neighbourhood;
+// roulette: q uniform in [0, 1], walk the neighbours until the summed probability exceeds q.
+int Colony::roulette(int n, double total) {
+  const double q = uniform01(rng_);
+  double cum = 0.0;
+  for (int c = 0; c < n; ++c) {
+    cum += weight_[c] / total;
+    if (cum > q)
+      return c;
+  }
+  return n - 1;
+}
 
-  // Action choice rule, eq. (7): P_j = tau_j^alpha eta_j^beta / sum over the feasible neighbourhood;
-  // roulette: q uniform in [0, 1], walk the neighbours until the summed probability exceeds q.
-  auto roulette = [&](int n, double total) {
-    const double q = uniform01(rng);
-    double cum = 0.0;
-    for (int c = 0; c < n; ++c) {
-      cum += weight[c] / total;
-      if (cum > q)
-        return c;
-    }
-    return n - 1;
-  };
+// The feasible moves from vertex v of `row` (in state m) to the next row, into cand_ and weight_;
+// returns their number and their summed weight in *total.
+int Colony::nextOptions(int row, int v, const Motion& m, double* total) {
+  const int col = graph_.colOf(v);
+  int n = 0;
+  *total = 0.0;
+  Step s;
+  for (int k = -k_max_; k <= k_max_; ++k) {
+    const int jj = col + k;
+    if (jj < -graph_.halfColumns() || jj > graph_.halfColumns())
+      continue;
+    const int q = graph_.id(row + 1, jj);
+    if (!graph_.inGraph(q) || !graph_.edgeStaticFree(v, k) ||
+        !search_.advance(m, graph_.position(q), true, &s))
+      continue;
+    cand_[n] = {q, k, s.next};
+    weight_[n] = tauAlpha(q) * eta_beta_[k + k_max_];
+    *total += weight_[n++];
+  }
+  return n;
+}
 
+// Solution construction (2.3.2): one ant's walk, row by row, into w. False when the ant is boxed in
+// by the domains (only feasible solutions count, 2.3.4); else its length, eq. (9).
+bool Colony::walk(int* w, double* length) {
+  int n = 0;
+  double total = 0.0;
+  for (const auto& o : first_) {
+    cand_[n] = o;
+    weight_[n] = tauAlpha(o.vertex) * eta_beta_[o.k + k_max_];
+    total += weight_[n++];
+  }
+  int v = graph_.startId();
+  w[0] = v;
+  Motion m;
+  for (int row = 0; row + 1 < rows_; ++row) {
+    if (row > 0)
+      n = nextOptions(row, v, m, &total);
+    if (n == 0 || !(total > 0.0))
+      return false;
+    const int c = roulette(n, total);
+    v = cand_[c].vertex;
+    m = cand_[c].next;
+    w[row + 1] = v;
+  }
+  *length = m.length;
+  return true;
+}
+
+void Colony::keepIterationBest(int ants_run) {
+  int it_best = -1;
+  for (int a = 0; a < ants_run; ++a)
+    if (walk_len_[a] > 0.0 && (it_best < 0 || walk_len_[a] < walk_len_[it_best]))
+      it_best = a;
+  if (it_best < 0)
+    return;
+  const int* w = &walks_[static_cast<size_t>(it_best) * rows_];
+  std::vector<int> cand_walk(w, w + rows_);
+  if (std::find(elite_.begin(), elite_.end(), cand_walk) == elite_.end())
+    elite_.push_back(std::move(cand_walk));
+}
+
+// Pheromone update, eq. (8): evaporation on every vertex, then each ant's deposit.
+void Colony::updatePheromone() {
+  for (double& t : tau_)
+    t *= 1.0 - cfg_.rho;
+  for (int a = 0; a < cfg_.ants; ++a) {
+    if (walk_len_[a] <= 0.0)
+      continue;
+    const double amount = cfg_.deposit * straight_ / walk_len_[a];
+    const int* w = &walks_[static_cast<size_t>(a) * rows_];
+    for (int r = 0; r < rows_; ++r)
+      tau_[w[r]] += amount;
+  }
+}
+
+bool Colony::run(const Deadline& deadline) {
   for (int it = 0; it < cfg_.iterations && !diag_.stopped_by_time; ++it) {
     int ants_run = 0;
-    // --- solution construction (2.3.2) ---
     for (int a = 0; a < cfg_.ants; ++a) {
-      int* w = &walks[static_cast<size_t>(a) * rows];
-      walk_len[a] = -1.0;
+      int* w = &walks_[static_cast<size_t>(a) * rows_];
+      walk_len_[a] = -1.0;
       ++ants_run;
-      // Step 1 from the cached options.
-      int n = 0;
-      double total = 0.0;
-      for (const auto& o : first) {
-        cand[n] = o;
-        weight[n] = tauAlpha(o.vertex) * eta_beta[o.k + k_max];
-        total += weight[n++];
-      }
-      bool dead = n == 0 || !(total > 0.0);
-      Motion m;
-      int v = graph.startId();
-      w[0] = v;
-      if (!dead) {
-        const int c = roulette(n, total);
-        v = cand[c].vertex;
-        m = cand[c].next;
-        w[1] = v;
-      }
-      for (int row = 1; !dead && row + 1 < rows; ++row) {
-        const int col = graph.colOf(v);
-        n = 0;
-        total = 0.0;
-        Step s;
-        for (int k = -k_max; k <= k_max; ++k) {
-          const int jj = col + k;
-          if (jj < -graph.halfColumns() || jj > graph.halfColumns())
-            continue;
-          const int q = graph.id(row + 1, jj);
-          if (!graph.inGraph(q) || !graph.edgeStaticFree(v, k) ||
-              !search.advance(m, graph.position(q), true, &s))
-            continue;
-          cand[n] = {q, k, s.next};
-          weight[n] = tauAlpha(q) * eta_beta[k + k_max];
-          total += weight[n++];
-        }
-        if (n == 0 || !(total > 0.0)) {
-          dead = true;
-          break;
-        }
-        const int c = roulette(n, total);
-        v = cand[c].vertex;
-        m = cand[c].next;
-        w[row + 1] = v;
-      }
-      if (dead) {
-        ++diag_.ants_dead;  // boxed in by the domains: only feasible solutions count (2.3.4)
+      double len = 0.0;
+      if (!walk(w, &len)) {
+        ++diag_.ants_dead;
       } else {
         ++diag_.ants_completed;
-        walk_len[a] = m.length;  // eq. (9)
-        if (m.length < best_len) {
-          best_len = m.length;
-          std::copy(w, w + rows, best_walk.begin());
+        walk_len_[a] = len;
+        if (len < best_len_) {
+          best_len_ = len;
+          std::copy(w, w + rows_, best_walk_.begin());
         }
       }
       if (deadline.expired()) {
@@ -776,67 +756,192 @@ Plan AcoPlanner::plan(const PlanningProblem& problem) {
         break;
       }
     }
-    int it_best = -1;
-    for (int a = 0; a < ants_run; ++a)
-      if (walk_len[a] > 0.0 && (it_best < 0 || walk_len[a] < walk_len[it_best]))
-        it_best = a;
-    if (it_best >= 0) {
-      const int* w = &walks[static_cast<size_t>(it_best) * rows];
-      std::vector<int> cand_walk(w, w + rows);
-      if (std::find(elite.begin(), elite.end(), cand_walk) == elite.end())
-        elite.push_back(std::move(cand_walk));
-    }
+    keepIterationBest(ants_run);
     if (diag_.stopped_by_time && ants_run < cfg_.ants)
       break;  // an unfinished iteration leaves the trail as it was
-    // --- pheromone update, eq. (8): evaporation on every vertex, then each ant's deposit ---
-    for (double& t : tau)
-      t *= 1.0 - cfg_.rho;
-    for (int a = 0; a < cfg_.ants; ++a) {
-      if (walk_len[a] <= 0.0)
-        continue;
-      const double amount = cfg_.deposit * straight / walk_len[a];
-      const int* w = &walks[static_cast<size_t>(a) * rows];
-      for (int r = 0; r < rows; ++r)
-        tau[w[r]] += amount;
-    }
+    updatePheromone();
     ++diag_.iterations_run;
   }
+  return std::isfinite(best_len_);
+}
 
-  if (!std::isfinite(best_len))
-    return fail(std::string("no feasible trajectory (boxed in): ") + std::to_string(diag_.ants_dead) +
-                " ant(s) found no way" + (diag_.stopped_by_time ? ", stopped by the time limit" : ""));
+// One call of AcoPlanner::plan: the problem, the planner's settings and diagnostics, the clock.
+class AcoRun {
+public:
+  AcoRun(const PlanningProblem& problem, const AcoConfig& cfg, AcoDiagnostics& diag)
+      : problem_(problem), cfg_(cfg), diag_(diag), wall_(1e9) {}
+  Plan plan();
 
-  // --- best solution: the shortest lattice path, or with waypoint reduction the shortest reduced
-  // path among the iterations' best ---
+private:
+  Plan fail(const std::string& why) const;
+  Plan finish(const std::vector<TrajPoint>& traj, double length, const std::string& what);
+  bool directRoute(const AcoEnvironment& env, const Eigen::Vector2d& goal, std::vector<TrajPoint>* traj,
+                   double* len);
+  Plan colonyPlan(const AcoEnvironment& env);
+  bool bestTrajectory(const Colony& colony, const AcoGraph& graph, std::vector<TrajPoint>* traj, double* len);
+
+  const PlanningProblem& problem_;
+  const AcoConfig& cfg_;
+  AcoDiagnostics& diag_;
+  const Deadline wall_;
+  double speed_ = 0.0;            // [m/s] the planning speed
+  std::optional<Search> search_;  // once the input is known to be valid
+};
+
+Plan AcoRun::fail(const std::string& why) const {
+  Plan plan;
+  plan.status = PlanStatus::NoSolution;
+  plan.message = "aco: " + why;
+  plan.course_setpoint = problem_.own.course;
+  plan.speed_setpoint = problem_.own.speed;
+  plan.compute_time = wall_.elapsed();
+  return plan;
+}
+
+// The plan of a trajectory: its waypoints at the planning speed, and the order times of the
+// alterations (eq. 6: t_m before each turning point); the new course is steered now only when the
+// first alteration is ordered now.
+Plan AcoRun::finish(const std::vector<TrajPoint>& traj, double length, const std::string& what) {
+  Plan plan;
+  plan.status = PlanStatus::Ok;
+  for (const auto& tp : traj)
+    plan.waypoints.push_back({tp.pos, tp.time, tp.course, speed_});
+  for (size_t i = 1; i + 1 < traj.size(); ++i) {
+    const double alt = wrapPi(traj[i + 1].course - traj[i].course);
+    diag_.command_times.push_back(traj[i].time - search_->tm(std::abs(alt)));
+  }
+  plan.course_setpoint = search_->initial().course;
+  if (!diag_.command_times.empty() && diag_.command_times.front() <= 0.5)
+    plan.course_setpoint = traj[2].course;
+  plan.speed_setpoint = speed_;
+  plan.cost = length;
+  std::string msg = "aco: " + what + ", " + std::to_string(traj.size() - 1) + " leg(s), length " +
+                    fmt("%.0f m", length) + ", courses";
+  for (size_t i = 1; i < traj.size(); ++i)
+    msg += fmt(" %03.0f", radToDeg(wrapTwoPi(traj[i].course)));
+  plan.message = msg + " deg";
+  plan.compute_time = wall_.elapsed();
+  return plan;
+}
+
+// Step (3), dangerous targets: those whose domain the unaltered route to the final waypoint enters.
+// Without any, and with no land in the way, the direct route is the shortest safe trajectory: true
+// and that route in *traj, *len.
+bool AcoRun::directRoute(const AcoEnvironment& env, const Eigen::Vector2d& goal, std::vector<TrajPoint>* traj,
+                         double* len) {
+  const Motion& m0 = search_->initial();
+  search_->enforceMinFirst(false);
+  bool direct = false;
+  Step s;
+  if (search_->advance(m0, goal, false, &s, false)) {
+    const Eigen::Vector2d a = m0.pos, b = s.inserted ? s.turn_point : m0.pos;
+    const double tb = s.inserted ? s.turn_time : 0.0;
+    for (size_t j = 0; j < env.targetCount(); ++j)
+      if ((s.inserted && env.segmentHitsTarget(j, a, 0.0, b, tb)) ||
+          env.segmentHitsTarget(j, b, tb, goal, s.next.time))
+        ++diag_.dangerous_targets;
+    direct = diag_.dangerous_targets == 0 && search_->trajectory({m0.pos, goal}, traj, len);
+  }
+  search_->enforceMinFirst(true);
+  return direct;
+}
+
+// The result of the colony: the shortest lattice path, or with waypoint reduction the shortest
+// reduced path among the iterations' best.
+bool AcoRun::bestTrajectory(const Colony& colony, const AcoGraph& graph, std::vector<TrajPoint>* traj,
+                            double* len) {
   auto positions = [&](const std::vector<int>& w) {
     std::vector<Eigen::Vector2d> pts(w.size());
     for (size_t r = 0; r < w.size(); ++r)
       pts[r] = graph.position(w[r]);
     return pts;
   };
-  const std::vector<Eigen::Vector2d> best_pts = positions(best_walk);
-  diag_.best_walk = best_pts;
-  diag_.best_walk_length = best_len;
+  diag_.best_walk = positions(colony.bestWalk());
+  diag_.best_walk_length = colony.bestLength();
+  if (!search_->trajectory(diag_.best_walk, traj, len))
+    return false;
+  if (!cfg_.smooth)
+    return true;
+  std::vector<std::vector<int>> elite = colony.elite();
+  if (std::find(elite.begin(), elite.end(), colony.bestWalk()) == elite.end())
+    elite.push_back(colony.bestWalk());
+  std::vector<TrajPoint> reduced;
+  double rlen = 0.0;
+  for (const auto& w : elite)
+    if (search_->reduce(positions(w), &reduced, &rlen) && rlen < *len - 1e-6) {
+      *traj = reduced;
+      *len = rlen;
+    }
+  return true;
+}
+
+// Steps (4)-(5): the construction graph and the colony on it.
+Plan AcoRun::colonyPlan(const AcoEnvironment& env) {
+  const AcoGraph graph(problem_, cfg_, env);
+  for (int v = 0; v < graph.vertexCount(); ++v)
+    diag_.graph_vertices += graph.inGraph(v);
+  if (!graph.inGraph(graph.startId()))
+    return fail("no statically free way from the own ship to the final waypoint in the grid");
+  Colony colony(problem_, cfg_, graph, *search_, diag_);
+  // Termination by time (2.3.4); a budget <= 0 means none.
+  double budget = problem_.time_budget > 0.0 ? problem_.time_budget : 1e9;
+  if (cfg_.max_time > 0.0)
+    budget = std::min(budget, cfg_.max_time);
+  if (!colony.run(Deadline(budget)))
+    return fail(std::string("no feasible trajectory (boxed in): ") + std::to_string(diag_.ants_dead) +
+                " ant(s) found no way" + (diag_.stopped_by_time ? ", stopped by the time limit" : ""));
   std::vector<TrajPoint> traj;
   double len = 0.0;
-  if (!search.trajectory(best_pts, &traj, &len))
+  if (!bestTrajectory(colony, graph, &traj, &len))
     return fail("internal: the best path is not reproducible");
-  if (cfg_.smooth) {
-    if (std::find(elite.begin(), elite.end(), best_walk) == elite.end())
-      elite.push_back(best_walk);
-    std::vector<TrajPoint> reduced;
-    double rlen = 0.0;
-    for (const auto& w : elite)
-      if (search.reduce(positions(w), &reduced, &rlen) && rlen < len - 1e-6) {
-        traj = reduced;
-        len = rlen;
-      }
-  }
   return finish(traj, len,
                 std::to_string(diag_.iterations_run) + " iteration(s), " +
                     std::to_string(diag_.ants_completed) + " ant path(s), " +
                     std::to_string(diag_.dangerous_targets) + " dangerous target(s)" +
                     (diag_.stopped_by_time ? ", stopped by the time limit" : ""));
+}
+
+// Lazarowska (2015), Sec. 2: (1)-(2) the input data, (3) the dangerous targets, (4) the construction
+// graph, (5) the ant colony.
+Plan AcoRun::plan() {
+  const Eigen::Vector2d goal = finalWaypoint(problem_);
+  if (const std::string why = badInput(problem_, goal); !why.empty())
+    return fail(why);
+  // Course alterations only (the paper has no speed manoeuvre): the present speed, or the maximum
+  // when the ship is not under way.
+  speed_ = problem_.own.speed > 0.1 ? problem_.own.speed : problem_.limits.max_speed;
+  if (!(speed_ > 0.0) || !std::isfinite(speed_))
+    return fail("own ship has no speed to plan with");
+  const double dist = (goal - problem_.own.position).norm();
+  if (dist / cfg_.row_spacing > kMaxRows)
+    return fail("final waypoint too far for the grid (" + fmt("%.0f", dist / cfg_.row_spacing) + " rows)");
+  const AcoEnvironment env(problem_, inflatedDomain(cfg_.domain, problem_.min_separation),
+                           cfg_.colregs_factor);
+  search_.emplace(problem_, cfg_, env, speed_);
+  const Motion& m0 = search_->initial();
+  if (dist < kMinLegLength)
+    return finish({{m0.pos, 0.0, m0.course}}, 0.0, "already at the final waypoint");
+  if (!env.pointStaticFree(m0.pos))
+    return fail("own ship inside a static obstacle or outside the environment boundaries");
+  if (!env.pointStaticFree(goal))
+    return fail("final waypoint inside a static obstacle or outside the environment boundaries");
+  for (size_t j = 0; j < env.targetCount(); ++j)
+    if (env.segmentHitsTarget(j, m0.pos, 0.0, m0.pos, 0.0))
+      return fail("own ship already inside the domain of target '" + problem_.targets[j].state.id + "'");
+  std::vector<TrajPoint> traj;
+  double len = 0.0;
+  if (directRoute(env, goal, &traj, &len)) {
+    diag_.direct_route = true;
+    return finish(traj, len, "no dangerous target, direct route");
+  }
+  return colonyPlan(env);
+}
+
+}  // namespace
+
+Plan AcoPlanner::plan(const PlanningProblem& problem) {
+  diag_ = AcoDiagnostics{};
+  return AcoRun(problem, cfg_, diag_).plan();
 }
 
 }  // namespace asv
