@@ -215,6 +215,14 @@ public:
 private:
   void handleSentence(const nmea::Sentence& s);
   void print(const ais::Message& m);
+  // One message type's fields, in gpsd's order (scaled unless --unscaled).
+  void printPositionA(const ais::PositionReportA& x);
+  void printBaseStation(const ais::BaseStationReport& x);
+  void printStaticVoyage(const ais::StaticVoyageData& x);
+  void printPositionB(const ais::PositionReportB& x, unsigned type);
+  void printAidToNavigation(const ais::AidToNavigation& x);
+  void printStaticData24(const ais::StaticDataReport& x, std::uint32_t mmsi, const ais::Text20* merged_name);
+  void printLongRange(const ais::LongRangeReport& x);
   void header(const ais::Message& m);
   void dims(std::uint32_t bow, std::uint32_t stern, std::uint32_t port, std::uint32_t stbd);
 
@@ -322,258 +330,291 @@ void App::print(const ais::Message& m) {
 
   out_.reserveRecord(device_.size() * 6);
   header(m);
-  const bool sc = !unscaled_;
-  if (const auto* a = std::get_if<PositionReportA>(&m.body)) {
-    out_.lit(",\"status\":");
-    out_.u(a->status);
-    out_.lit(",\"status_text\":\"");
-    out_.raw(navStatusText(a->status));
-    out_.lit("\",\"turn\":");
-    if (!sc) {
-      out_.i(a->turn);
-    } else if (a->turn == -128) {
-      out_.lit("\"nan\"");
-    } else if (a->turn == -127) {
-      out_.lit("\"fastleft\"");
-    } else if (a->turn == 127) {
-      out_.lit("\"fastright\"");
-    } else {
-      const double r = a->turn / 4.733;
-      double v = std::nearbyint(r * r);
-      if (a->turn < 0 && v != 0.0)
-        v = -v;
-      out_.printf1("%.0f", v);
-    }
-    out_.lit(",\"speed\":");
-    if (!sc)
-      out_.u(a->speed);
-    else if (a->speed == 1023)
-      out_.lit("\"nan\"");
-    else if (a->speed == 1022)
-      out_.lit("\"fast\"");
-    else
-      out_.tenths(a->speed);
-    out_.lit(",\"accuracy\":");
-    out_.b(a->accuracy);
-    out_.lit(",\"lon\":");
-    sc ? out_.latlon(a->lon) : out_.i(a->lon);
-    out_.lit(",\"lat\":");
-    sc ? out_.latlon(a->lat) : out_.i(a->lat);
-    out_.lit(",\"course\":");
-    sc ? out_.tenths(a->course) : out_.u(a->course);
-    out_.lit(",\"heading\":");
-    out_.u(a->heading);
-    out_.lit(",\"second\":");
-    out_.u(a->second);
-    out_.lit(",\"maneuver\":");
-    out_.u(a->maneuver);
-    out_.lit(",\"raim\":");
-    out_.b(a->raim);
-    out_.lit(",\"radio\":");
-    out_.u(a->radio);
-  } else if (const auto* s = std::get_if<BaseStationReport>(&m.body)) {
-    out_.lit(",\"timestamp\":\"");
-    out_.pad(s->year, 4);
-    out_.lit("-");
-    out_.pad(s->month, 2);
-    out_.lit("-");
-    out_.pad(s->day, 2);
-    out_.lit("T");
-    out_.pad(s->hour, 2);
-    out_.lit(":");
-    out_.pad(s->minute, 2);
-    out_.lit(":");
-    out_.pad(s->second, 2);
-    out_.lit("Z\",\"accuracy\":");
-    out_.b(s->accuracy);
-    out_.lit(",\"lon\":");
-    sc ? out_.latlon(s->lon) : out_.i(s->lon);
-    out_.lit(",\"lat\":");
-    sc ? out_.latlon(s->lat) : out_.i(s->lat);
-    out_.lit(",\"epfd\":");
-    out_.u(s->epfd);
-    out_.lit(",\"epfd_text\":\"");
-    out_.raw(epfdText(s->epfd));
-    out_.lit("\",\"raim\":");
-    out_.b(s->raim);
-    out_.lit(",\"radio\":");
-    out_.u(s->radio);
-  } else if (const auto* v = std::get_if<StaticVoyageData>(&m.body)) {
-    out_.lit(",\"imo\":");
-    out_.u(v->imo);
-    out_.lit(",\"ais_version\":");
-    out_.u(v->ais_version);
-    out_.lit(",\"callsign\":");
-    out_.str(v->callsign.view());
-    out_.lit(",\"shipname\":");
-    out_.str(v->shipname.view());
-    out_.lit(",\"shiptype\":");
-    out_.u(v->shiptype);
-    out_.lit(",\"shiptype_text\":\"");
-    out_.raw(shipTypeText(v->shiptype));
-    out_.lit("\"");
-    dims(v->to_bow, v->to_stern, v->to_port, v->to_starboard);
-    out_.lit(",\"epfd\":");
-    out_.u(v->epfd);
-    out_.lit(",\"epfd_text\":\"");
-    out_.raw(epfdText(v->epfd));
-    out_.lit("\",\"eta\":\"");
-    out_.pad(v->month, 2);
-    out_.lit("-");
-    out_.pad(v->day, 2);
-    out_.lit("T");
-    out_.pad(v->hour, 2);
-    out_.lit(":");
-    out_.pad(v->minute, 2);
-    out_.lit("Z\",\"draught\":");
-    sc ? out_.tenths(v->draught) : out_.u(v->draught);
-    out_.lit(",\"destination\":");
-    out_.str(v->destination.view());
-    out_.lit(",\"dte\":");
-    out_.u(v->dte ? 1 : 0);
-  } else if (const auto* b = std::get_if<PositionReportB>(&m.body)) {
-    out_.lit(",\"reserved\":");
-    out_.u(b->reserved);
-    out_.lit(",\"speed\":");
-    sc ? out_.tenths(b->speed) : out_.u(b->speed);
-    out_.lit(",\"accuracy\":");
-    out_.b(b->accuracy);
-    out_.lit(",\"lon\":");
-    sc ? out_.latlon(b->lon) : out_.i(b->lon);
-    out_.lit(",\"lat\":");
-    sc ? out_.latlon(b->lat) : out_.i(b->lat);
-    out_.lit(",\"course\":");
-    sc ? out_.tenths(b->course) : out_.u(b->course);
-    out_.lit(",\"heading\":");
-    out_.u(b->heading);
-    out_.lit(",\"second\":");
-    out_.u(b->second);
-    out_.lit(",\"regional\":");
-    out_.u(b->regional);
-    if (m.type == 18) {
-      out_.lit(",\"cs\":");
-      out_.b(b->cs);
-      out_.lit(",\"display\":");
-      out_.b(b->display);
-      out_.lit(",\"dsc\":");
-      out_.b(b->dsc);
-      out_.lit(",\"band\":");
-      out_.b(b->band);
-      out_.lit(",\"msg22\":");
-      out_.b(b->msg22);
-      out_.lit(",\"raim\":");
-      out_.b(b->raim);
-      out_.lit(",\"radio\":");
-      out_.u(b->radio);
-    } else {
-      out_.lit(",\"shipname\":");
-      out_.str(b->shipname.view());
-      out_.lit(",\"shiptype\":");
-      out_.u(b->shiptype);
-      out_.lit(",\"shiptype_text\":\"");
-      out_.raw(shipTypeText(b->shiptype));
-      out_.lit("\"");
-      dims(b->to_bow, b->to_stern, b->to_port, b->to_starboard);
-      out_.lit(",\"epfd\":");
-      out_.u(b->epfd);
-      out_.lit(",\"epfd_text\":\"");
-      out_.raw(epfdText(b->epfd));
-      out_.lit("\",\"raim\":");
-      out_.b(b->raim);
-      out_.lit(",\"dte\":");
-      out_.u(b->dte ? 1 : 0);
-      out_.lit(",\"assigned\":");
-      out_.b(b->assigned);
-    }
-  } else if (const auto* n = std::get_if<AidToNavigation>(&m.body)) {
-    out_.lit(",\"aid_type\":");
-    out_.u(n->aid_type);
-    out_.lit(",\"aid_type_text\":\"");
-    out_.raw(aidTypeText(n->aid_type));
-    out_.lit("\",\"name\":");
-    out_.str(n->name.view());
-    // gpsd orders these differently in its two modes.
-    if (sc) {
-      out_.lit(",\"lon\":");
-      out_.latlon(n->lon);
-      out_.lit(",\"lat\":");
-      out_.latlon(n->lat);
-      out_.lit(",\"accuracy\":");
-      out_.b(n->accuracy);
-    } else {
-      out_.lit(",\"accuracy\":");
-      out_.b(n->accuracy);
-      out_.lit(",\"lon\":");
-      out_.i(n->lon);
-      out_.lit(",\"lat\":");
-      out_.i(n->lat);
-    }
-    dims(n->to_bow, n->to_stern, n->to_port, n->to_starboard);
-    out_.lit(",\"epfd\":");
-    out_.u(n->epfd);
-    out_.lit(",\"epfd_text\":\"");
-    out_.raw(epfdText(n->epfd));
-    out_.lit("\",\"second\":");
-    out_.u(n->second);
-    out_.lit(",\"regional\":");
-    out_.u(n->regional);
-    out_.lit(",\"off_position\":");
-    out_.b(n->off_position);
-    out_.lit(",\"raim\":");
-    out_.b(n->raim);
-    out_.lit(",\"virtual_aid\":");
-    out_.b(n->virtual_aid);
-  } else if (t24) {
-    if (merged24) {
-      out_.lit(",\"shipname\":");
-      out_.str(name24.view());
-    } else {
-      out_.lit(",\"part\":\"B\"");
-    }
-    out_.lit(",\"shiptype\":");
-    out_.u(t24->shiptype);
-    out_.lit(",\"shiptype_text\":\"");
-    out_.raw(shipTypeText(t24->shiptype));
-    out_.lit("\",\"vendorid\":");
-    out_.str(t24->vendorid.view());
-    out_.lit(",\"model\":");
-    out_.u(t24->model);
-    out_.lit(",\"serial\":");
-    out_.u(t24->serial);
-    out_.lit(",\"callsign\":");
-    out_.str(t24->callsign.view());
-    if (m.mmsi / 10000000u == 98u) {
-      out_.lit(",\"mothership_mmsi\":");
-      out_.u(t24->mothership_mmsi);
-    } else {
-      dims(t24->to_bow, t24->to_stern, t24->to_port, t24->to_starboard);
-    }
-  } else if (const auto* l = std::get_if<LongRangeReport>(&m.body)) {
-    out_.lit(",\"status\":");
-    if (sc) {
-      out_.lit("\"");
-      out_.raw(navStatusText(l->status));
-      out_.lit("\"");
-    } else {
-      out_.u(l->status);
-    }
-    out_.lit(",\"accuracy\":");
-    out_.b(l->accuracy);
-    out_.lit(",\"lon\":");
-    sc ? out_.printf1("%.1f", l->lon / 600.0) : out_.i(l->lon);
-    out_.lit(",\"lat\":");
-    sc ? out_.printf1("%.1f", l->lat / 600.0) : out_.i(l->lat);
-    out_.lit(",\"speed\":");
-    out_.u(l->speed);
-    out_.lit(",\"course\":");
-    out_.u(l->course);
-    out_.lit(",\"raim\":");
-    out_.b(l->raim);
-    out_.lit(",\"gnss\":");
-    out_.b(l->gnss);
-  }
+  if (const auto* a = std::get_if<PositionReportA>(&m.body))
+    printPositionA(*a);
+  else if (const auto* s = std::get_if<BaseStationReport>(&m.body))
+    printBaseStation(*s);
+  else if (const auto* v = std::get_if<StaticVoyageData>(&m.body))
+    printStaticVoyage(*v);
+  else if (const auto* b = std::get_if<PositionReportB>(&m.body))
+    printPositionB(*b, m.type);
+  else if (const auto* n = std::get_if<AidToNavigation>(&m.body))
+    printAidToNavigation(*n);
+  else if (t24)
+    printStaticData24(*t24, m.mmsi, merged24 ? &name24 : nullptr);
+  else if (const auto* l = std::get_if<LongRangeReport>(&m.body))
+    printLongRange(*l);
   out_.lit("}\r\n");
   ++stats_.printed;
+}
+
+void App::printPositionA(const ais::PositionReportA& x) {
+  const bool sc = !unscaled_;
+  out_.lit(",\"status\":");
+  out_.u(x.status);
+  out_.lit(",\"status_text\":\"");
+  out_.raw(ais::navStatusText(x.status));
+  out_.lit("\",\"turn\":");
+  if (!sc) {
+    out_.i(x.turn);
+  } else if (x.turn == -128) {
+    out_.lit("\"nan\"");
+  } else if (x.turn == -127) {
+    out_.lit("\"fastleft\"");
+  } else if (x.turn == 127) {
+    out_.lit("\"fastright\"");
+  } else {
+    const double r = x.turn / 4.733;
+    double v = std::nearbyint(r * r);
+    if (x.turn < 0 && v != 0.0)
+      v = -v;
+    out_.printf1("%.0f", v);
+  }
+  out_.lit(",\"speed\":");
+  if (!sc)
+    out_.u(x.speed);
+  else if (x.speed == 1023)
+    out_.lit("\"nan\"");
+  else if (x.speed == 1022)
+    out_.lit("\"fast\"");
+  else
+    out_.tenths(x.speed);
+  out_.lit(",\"accuracy\":");
+  out_.b(x.accuracy);
+  out_.lit(",\"lon\":");
+  sc ? out_.latlon(x.lon) : out_.i(x.lon);
+  out_.lit(",\"lat\":");
+  sc ? out_.latlon(x.lat) : out_.i(x.lat);
+  out_.lit(",\"course\":");
+  sc ? out_.tenths(x.course) : out_.u(x.course);
+  out_.lit(",\"heading\":");
+  out_.u(x.heading);
+  out_.lit(",\"second\":");
+  out_.u(x.second);
+  out_.lit(",\"maneuver\":");
+  out_.u(x.maneuver);
+  out_.lit(",\"raim\":");
+  out_.b(x.raim);
+  out_.lit(",\"radio\":");
+  out_.u(x.radio);
+}
+
+void App::printBaseStation(const ais::BaseStationReport& x) {
+  const bool sc = !unscaled_;
+  out_.lit(",\"timestamp\":\"");
+  out_.pad(x.year, 4);
+  out_.lit("-");
+  out_.pad(x.month, 2);
+  out_.lit("-");
+  out_.pad(x.day, 2);
+  out_.lit("T");
+  out_.pad(x.hour, 2);
+  out_.lit(":");
+  out_.pad(x.minute, 2);
+  out_.lit(":");
+  out_.pad(x.second, 2);
+  out_.lit("Z\",\"accuracy\":");
+  out_.b(x.accuracy);
+  out_.lit(",\"lon\":");
+  sc ? out_.latlon(x.lon) : out_.i(x.lon);
+  out_.lit(",\"lat\":");
+  sc ? out_.latlon(x.lat) : out_.i(x.lat);
+  out_.lit(",\"epfd\":");
+  out_.u(x.epfd);
+  out_.lit(",\"epfd_text\":\"");
+  out_.raw(ais::epfdText(x.epfd));
+  out_.lit("\",\"raim\":");
+  out_.b(x.raim);
+  out_.lit(",\"radio\":");
+  out_.u(x.radio);
+}
+
+void App::printStaticVoyage(const ais::StaticVoyageData& x) {
+  const bool sc = !unscaled_;
+  out_.lit(",\"imo\":");
+  out_.u(x.imo);
+  out_.lit(",\"ais_version\":");
+  out_.u(x.ais_version);
+  out_.lit(",\"callsign\":");
+  out_.str(x.callsign.view());
+  out_.lit(",\"shipname\":");
+  out_.str(x.shipname.view());
+  out_.lit(",\"shiptype\":");
+  out_.u(x.shiptype);
+  out_.lit(",\"shiptype_text\":\"");
+  out_.raw(ais::shipTypeText(x.shiptype));
+  out_.lit("\"");
+  dims(x.to_bow, x.to_stern, x.to_port, x.to_starboard);
+  out_.lit(",\"epfd\":");
+  out_.u(x.epfd);
+  out_.lit(",\"epfd_text\":\"");
+  out_.raw(ais::epfdText(x.epfd));
+  out_.lit("\",\"eta\":\"");
+  out_.pad(x.month, 2);
+  out_.lit("-");
+  out_.pad(x.day, 2);
+  out_.lit("T");
+  out_.pad(x.hour, 2);
+  out_.lit(":");
+  out_.pad(x.minute, 2);
+  out_.lit("Z\",\"draught\":");
+  sc ? out_.tenths(x.draught) : out_.u(x.draught);
+  out_.lit(",\"destination\":");
+  out_.str(x.destination.view());
+  out_.lit(",\"dte\":");
+  out_.u(x.dte ? 1 : 0);
+}
+
+void App::printPositionB(const ais::PositionReportB& x, unsigned type) {
+  const bool sc = !unscaled_;
+  out_.lit(",\"reserved\":");
+  out_.u(x.reserved);
+  out_.lit(",\"speed\":");
+  sc ? out_.tenths(x.speed) : out_.u(x.speed);
+  out_.lit(",\"accuracy\":");
+  out_.b(x.accuracy);
+  out_.lit(",\"lon\":");
+  sc ? out_.latlon(x.lon) : out_.i(x.lon);
+  out_.lit(",\"lat\":");
+  sc ? out_.latlon(x.lat) : out_.i(x.lat);
+  out_.lit(",\"course\":");
+  sc ? out_.tenths(x.course) : out_.u(x.course);
+  out_.lit(",\"heading\":");
+  out_.u(x.heading);
+  out_.lit(",\"second\":");
+  out_.u(x.second);
+  out_.lit(",\"regional\":");
+  out_.u(x.regional);
+  if (type == 18) {
+    out_.lit(",\"cs\":");
+    out_.b(x.cs);
+    out_.lit(",\"display\":");
+    out_.b(x.display);
+    out_.lit(",\"dsc\":");
+    out_.b(x.dsc);
+    out_.lit(",\"band\":");
+    out_.b(x.band);
+    out_.lit(",\"msg22\":");
+    out_.b(x.msg22);
+    out_.lit(",\"raim\":");
+    out_.b(x.raim);
+    out_.lit(",\"radio\":");
+    out_.u(x.radio);
+  } else {
+    out_.lit(",\"shipname\":");
+    out_.str(x.shipname.view());
+    out_.lit(",\"shiptype\":");
+    out_.u(x.shiptype);
+    out_.lit(",\"shiptype_text\":\"");
+    out_.raw(ais::shipTypeText(x.shiptype));
+    out_.lit("\"");
+    dims(x.to_bow, x.to_stern, x.to_port, x.to_starboard);
+    out_.lit(",\"epfd\":");
+    out_.u(x.epfd);
+    out_.lit(",\"epfd_text\":\"");
+    out_.raw(ais::epfdText(x.epfd));
+    out_.lit("\",\"raim\":");
+    out_.b(x.raim);
+    out_.lit(",\"dte\":");
+    out_.u(x.dte ? 1 : 0);
+    out_.lit(",\"assigned\":");
+    out_.b(x.assigned);
+  }
+}
+
+void App::printAidToNavigation(const ais::AidToNavigation& x) {
+  const bool sc = !unscaled_;
+  out_.lit(",\"aid_type\":");
+  out_.u(x.aid_type);
+  out_.lit(",\"aid_type_text\":\"");
+  out_.raw(ais::aidTypeText(x.aid_type));
+  out_.lit("\",\"name\":");
+  out_.str(x.name.view());
+  // gpsd orders these differently in its two modes.
+  if (sc) {
+    out_.lit(",\"lon\":");
+    out_.latlon(x.lon);
+    out_.lit(",\"lat\":");
+    out_.latlon(x.lat);
+    out_.lit(",\"accuracy\":");
+    out_.b(x.accuracy);
+  } else {
+    out_.lit(",\"accuracy\":");
+    out_.b(x.accuracy);
+    out_.lit(",\"lon\":");
+    out_.i(x.lon);
+    out_.lit(",\"lat\":");
+    out_.i(x.lat);
+  }
+  dims(x.to_bow, x.to_stern, x.to_port, x.to_starboard);
+  out_.lit(",\"epfd\":");
+  out_.u(x.epfd);
+  out_.lit(",\"epfd_text\":\"");
+  out_.raw(ais::epfdText(x.epfd));
+  out_.lit("\",\"second\":");
+  out_.u(x.second);
+  out_.lit(",\"regional\":");
+  out_.u(x.regional);
+  out_.lit(",\"off_position\":");
+  out_.b(x.off_position);
+  out_.lit(",\"raim\":");
+  out_.b(x.raim);
+  out_.lit(",\"virtual_aid\":");
+  out_.b(x.virtual_aid);
+}
+
+void App::printStaticData24(const ais::StaticDataReport& x, std::uint32_t mmsi,
+                            const ais::Text20* merged_name) {
+  if (merged_name) {
+    out_.lit(",\"shipname\":");
+    out_.str(merged_name->view());
+  } else {
+    out_.lit(",\"part\":\"B\"");
+  }
+  out_.lit(",\"shiptype\":");
+  out_.u(x.shiptype);
+  out_.lit(",\"shiptype_text\":\"");
+  out_.raw(ais::shipTypeText(x.shiptype));
+  out_.lit("\",\"vendorid\":");
+  out_.str(x.vendorid.view());
+  out_.lit(",\"model\":");
+  out_.u(x.model);
+  out_.lit(",\"serial\":");
+  out_.u(x.serial);
+  out_.lit(",\"callsign\":");
+  out_.str(x.callsign.view());
+  if (mmsi / 10000000u == 98u) {
+    out_.lit(",\"mothership_mmsi\":");
+    out_.u(x.mothership_mmsi);
+  } else {
+    dims(x.to_bow, x.to_stern, x.to_port, x.to_starboard);
+  }
+}
+
+void App::printLongRange(const ais::LongRangeReport& x) {
+  const bool sc = !unscaled_;
+  out_.lit(",\"status\":");
+  if (sc) {
+    out_.lit("\"");
+    out_.raw(ais::navStatusText(x.status));
+    out_.lit("\"");
+  } else {
+    out_.u(x.status);
+  }
+  out_.lit(",\"accuracy\":");
+  out_.b(x.accuracy);
+  out_.lit(",\"lon\":");
+  sc ? out_.printf1("%.1f", x.lon / 600.0) : out_.i(x.lon);
+  out_.lit(",\"lat\":");
+  sc ? out_.printf1("%.1f", x.lat / 600.0) : out_.i(x.lat);
+  out_.lit(",\"speed\":");
+  out_.u(x.speed);
+  out_.lit(",\"course\":");
+  out_.u(x.course);
+  out_.lit(",\"raim\":");
+  out_.b(x.raim);
+  out_.lit(",\"gnss\":");
+  out_.b(x.gnss);
 }
 
 void App::finish(const char* prog) {
