@@ -508,17 +508,37 @@ std::vector<Manoeuvre> RunRecorder::manoeuvres(const Track& tr) const {
   return out;
 }
 
-TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
-  TargetResult r;
-  r.name = info_.ships[j].name;
-  r.min_distance = min_dist_[i][j] < kFar ? min_dist_[i][j] : kNaN;
-  r.collision = collided_[i][j] != 0;
-  r.safety = r.collision ? 0.0 : safetyScore(r.min_distance, r_pref_, r_min_, r_nm_, cfg_.safety_at_r_min);
+// What the own ship did in a target's passage, from the entry into the rules (ke) to the closest
+// approach (kc): its largest turns to either side and its largest speed loss relative to the entry,
+// and the first action (ka; both.size() when none).
+struct RunRecorder::Passage {
+  const Instants& both;
+  const std::vector<Cpa>& cpas;
+  EncounterGeometry g;
+  size_t ke = 0, kc = 0, ka = 0;
+  double max_stbd = 0.0, max_port = 0.0, speed_drop = 0.0;  // [rad], [rad], [-]
+  double alter_deg = 0.0;                                   // [deg] the larger turn
+  const char* side = "starboard";                           // of the larger turn
+  bool port_dominant = false;  // a turn to port of at least action_course_deg, larger than to starboard
+};
 
-  // Common instants of both ships while both are in the scenario.
+namespace {
+
+// A rule finding: the score's factor loses the fraction p and the note says why.
+void penalise(TargetResult& r, double& factor, double p, const std::string& note) {
+  if (p <= 0.0)
+    return;
+  factor *= 1.0 - p;
+  r.colregs_ok = false;
+  r.notes.push_back(note);
+}
+
+}  // namespace
+
+RunRecorder::Instants RunRecorder::commonInstants(size_t i, size_t j) const {
   const auto& A = tracks_[i].points;
   const auto& B = tracks_[j].points;
-  std::vector<std::pair<const Point*, const Point*>> both;
+  Instants both;
   for (size_t a = 0, b = 0; a < A.size() && b < B.size();) {
     if (std::fabs(A[a].t - B[b].t) < 1e-6) {
       if (A[a].active && B[b].active)
@@ -531,23 +551,137 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
       ++b;
     }
   }
-  auto finishScore = [&](double factor) {
-    r.score = std::clamp(r.safety * factor, 0.0, 1.0);
-    if (r.collision) {
-      r.notes.push_back("collision");
-      r.colregs_ok = false;
-    } else if (std::isfinite(r.min_distance) && r.min_distance < r_min_) {
-      r.notes.push_back(fmt("closest approach %.0f m < minimum %.0f m", r.min_distance, r_min_));
-    }
-  };
+  return both;
+}
+
+RunRecorder::Passage RunRecorder::passage(const Instants& both, const std::vector<Cpa>& cpas,
+                                          size_t ke) const {
+  Passage p{both, cpas, classifyEncounter(both[ke].first->s, both[ke].second->s, cpas[ke], cfg_.colregs)};
+  p.ke = p.kc = ke;
+  for (size_t k = ke; k < both.size(); ++k)
+    if (cpas[k].range < cpas[p.kc].range)
+      p.kc = k;
+  const ShipState& own_e = both[ke].first->s;
+  const double c_ref = own_e.course, v_ref = own_e.speed;
+  const double act_course = degToRad(cfg_.action_course_deg);
+  p.ka = both.size();
+  for (size_t k = ke; k <= p.kc; ++k) {
+    const ShipState& s = both[k].first->s;
+    const double dev = wrapPi(s.course - c_ref);
+    const double drop = v_ref > 0.1 ? std::max(0.0, 1.0 - s.speed / v_ref) : 0.0;
+    p.max_stbd = std::max(p.max_stbd, dev);
+    p.max_port = std::max(p.max_port, -dev);
+    p.speed_drop = std::max(p.speed_drop, drop);
+    if (p.ka == both.size() && (std::fabs(dev) >= act_course || drop >= cfg_.action_speed_fraction))
+      p.ka = k;
+  }
+  p.alter_deg = radToDeg(std::max(p.max_stbd, p.max_port));
+  p.side = p.max_stbd >= p.max_port ? "starboard" : "port";
+  p.port_dominant = p.max_port >= act_course && p.max_port > p.max_stbd;
+  return p;
+}
+
+// The give-way ship (and both ships head-on): Rules 8, 14, 15 and 16.
+void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor) const {
+  const Instants& both = p.both;
+  // Rule 8: readily apparent.
+  const double apparent =
+      std::max(p.alter_deg / cfg_.apparent_course_deg, p.speed_drop / cfg_.apparent_speed_fraction);
+  if (apparent < 1.0)
+    penalise(r, factor, cfg_.penalty_rule8 * (1.0 - apparent),
+             std::string("rule 8: ") + p.side +
+                 fmt(" turn %.0f deg (speed -%.0f %%) < %.0f deg apparent", p.alter_deg, 100.0 * p.speed_drop,
+                     cfg_.apparent_course_deg));
+  // Rule 16: early.
+  if (p.ka == both.size()) {
+    penalise(r, factor, cfg_.penalty_late, "rule 16: the give-way ship took no action");
+  } else {
+    const size_t kb = p.ka > p.ke ? p.ka - 1 : p.ke;
+    const double range = p.cpas[kb].range, tcpa = p.cpas[kb].tcpa;
+    const double early = std::max(range / cfg_.early_range_m, tcpa / cfg_.early_tcpa_s);
+    if (early < 1.0)
+      penalise(r, factor, cfg_.penalty_late * (1.0 - early),
+               fmt("rule 16: first action at t=%.0f s, %.0f m and %.0f s from CPA: late (early: %.0f m or ",
+                   both[p.ka].first->t, range, tcpa, cfg_.early_range_m) +
+                   fmt("%.0f s)", cfg_.early_tcpa_s));
+  }
+  // Rules 14 and 15: starboard.
+  if (p.port_dominant && p.g.encounter == Encounter::HeadOn)
+    penalise(r, factor, cfg_.penalty_port,
+             fmt("rule 14: turned %.0f deg to port in a head-on encounter", radToDeg(p.max_port)));
+  if (p.port_dominant && p.g.encounter == Encounter::CrossingGiveWay)
+    penalise(
+        r, factor, cfg_.penalty_port,
+        fmt("rule 15: turned %.0f deg to port for a ship crossing from starboard", radToDeg(p.max_port)));
+  if (p.g.encounter != Encounter::CrossingGiveWay)
+    return;
+  // Rule 15: not across the stand-on ship's bow. The first time the own ship crosses the target's
+  // track line after entry decides.
+  for (size_t k = p.ke + 1; k < both.size(); ++k) {
+    const ShipState& t0 = both[k - 1].second->s;
+    const ShipState& t1 = both[k].second->s;
+    const Eigen::Vector2d u0 = courseSpeedToVelocity(t0.course, 1.0);
+    const Eigen::Vector2d u1 = courseSpeedToVelocity(t1.course, 1.0);
+    const Eigen::Vector2d rel0 = both[k - 1].first->s.position - t0.position;
+    const Eigen::Vector2d rel1 = both[k].first->s.position - t1.position;
+    const double s0 = sideOf(u0, rel0), s1 = sideOf(u1, rel1);
+    if ((s0 < 0.0) == (s1 < 0.0))
+      continue;
+    if (u1.dot(rel1) > 0.0 && rel1.norm() < cfg_.cross_ahead_range_m)
+      penalise(r, factor, cfg_.penalty_ahead,
+               fmt("rule 15: crossed %.0f m ahead of the stand-on ship at t=%.0f s", rel1.norm(),
+                   both[k].first->t));
+    break;
+  }
+}
+
+// The stand-on ship: Rule 17 (no action before the give-way ship's is clearly lacking; not to port for
+// a ship on the port side).
+void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor) const {
+  const Instants& both = p.both;
+  size_t ku = both.size();
+  for (size_t k = p.ke; k < both.size() && ku == both.size(); ++k)
+    if (p.cpas[k].tcpa >= 0.0 && riskLevel(p.cpas[k].tcpa, p.cpas[k].dcpa, cfg_.hu) == RiskLevel::Urgent)
+      ku = k;
+  if (p.ka < both.size() && p.ka < ku) {
+    const std::string urgent =
+        ku < both.size() ? fmt("urgent only at t=%.0f s", both[ku].first->t) : std::string("never urgent");
+    penalise(r, factor, cfg_.penalty_stand_on,
+             fmt("rule 17: the stand-on ship altered (%.0f deg, speed -%.0f %%) at t=%.0f s, before the "
+                 "give-way ship's action was clearly lacking (",
+                 p.alter_deg, 100.0 * p.speed_drop, both[p.ka].first->t) +
+                 urgent + ")");
+  } else if (p.ka < both.size() && p.port_dominant && p.g.encounter == Encounter::CrossingStandOn) {
+    penalise(r, factor, cfg_.penalty_port,
+             fmt("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(p.max_port)));
+  }
+}
+
+void RunRecorder::finishScore(TargetResult& r, double factor) const {
+  r.score = std::clamp(r.safety * factor, 0.0, 1.0);
+  if (r.collision) {
+    r.notes.push_back("collision");
+    r.colregs_ok = false;
+  } else if (std::isfinite(r.min_distance) && r.min_distance < r_min_) {
+    r.notes.push_back(fmt("closest approach %.0f m < minimum %.0f m", r.min_distance, r_min_));
+  }
+}
+
+TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
+  TargetResult r;
+  r.name = info_.ships[j].name;
+  r.min_distance = min_dist_[i][j] < kFar ? min_dist_[i][j] : kNaN;
+  r.collision = collided_[i][j] != 0;
+  r.safety = r.collision ? 0.0 : safetyScore(r.min_distance, r_pref_, r_min_, r_nm_, cfg_.safety_at_r_min);
+  const Instants both = commonInstants(i, j);
   if (both.empty()) {
-    finishScore(1.0);
+    finishScore(r, 1.0);
     return r;
   }
   const Cpa c0 = computeCpa(both.front().first->s, both.front().second->s);
   r.tcpa_at_start = c0.tcpa;
   r.dcpa_at_start = c0.dcpa;
-
+  // The entry into the rules (ke): the first instant of a risk of collision.
   std::vector<Cpa> cpas(both.size());
   size_t ke = both.size();
   for (size_t k = 0; k < both.size(); ++k) {
@@ -563,113 +697,19 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
     r.encounter = g.encounter;
     r.role = g.role;
     r.notes.push_back("no risk of collision developed: rules 8 and 13-17 not evaluated");
-    finishScore(1.0);
+    finishScore(r, 1.0);
     return r;
   }
   r.evaluated = true;
-  const ShipState& own_e = both[ke].first->s;
-  const EncounterGeometry g = classifyEncounter(own_e, both[ke].second->s, cpas[ke], cfg_.colregs);
-  r.encounter = g.encounter;
-  r.role = g.role;
-
-  // The passage: from entry to the closest approach.
-  size_t kc = ke;
-  for (size_t k = ke; k < both.size(); ++k)
-    if (cpas[k].range < cpas[kc].range)
-      kc = k;
-  const double c_ref = own_e.course, v_ref = own_e.speed;
-  const double act_course = degToRad(cfg_.action_course_deg);
-  double max_stbd = 0.0, max_port = 0.0, speed_drop = 0.0;
-  size_t ka = both.size();
-  for (size_t k = ke; k <= kc; ++k) {
-    const ShipState& s = both[k].first->s;
-    const double dev = wrapPi(s.course - c_ref);
-    const double drop = v_ref > 0.1 ? std::max(0.0, 1.0 - s.speed / v_ref) : 0.0;
-    max_stbd = std::max(max_stbd, dev);
-    max_port = std::max(max_port, -dev);
-    speed_drop = std::max(speed_drop, drop);
-    if (ka == both.size() && (std::fabs(dev) >= act_course || drop >= cfg_.action_speed_fraction))
-      ka = k;
-  }
-  const double alter_deg = radToDeg(std::max(max_stbd, max_port));
-  const char* side = max_stbd >= max_port ? "starboard" : "port";
-  const bool port_dominant = max_port >= act_course && max_port > max_stbd;
+  const Passage p = passage(both, cpas, ke);
+  r.encounter = p.g.encounter;
+  r.role = p.g.role;
   double factor = 1.0;
-  auto penalise = [&](double p, const std::string& note) {
-    if (p <= 0.0)
-      return;
-    factor *= 1.0 - p;
-    r.colregs_ok = false;
-    r.notes.push_back(note);
-  };
-
-  if (g.role == OwnRole::GiveWay || g.role == OwnRole::BothGiveWay) {
-    // Rule 8: readily apparent.
-    const double apparent =
-        std::max(alter_deg / cfg_.apparent_course_deg, speed_drop / cfg_.apparent_speed_fraction);
-    if (apparent < 1.0)
-      penalise(cfg_.penalty_rule8 * (1.0 - apparent),
-               std::string("rule 8: ") + side +
-                   fmt(" turn %.0f deg (speed -%.0f %%) < %.0f deg apparent", alter_deg, 100.0 * speed_drop,
-                       cfg_.apparent_course_deg));
-    // Rule 16: early.
-    if (ka == both.size()) {
-      penalise(cfg_.penalty_late, "rule 16: the give-way ship took no action");
-    } else {
-      const size_t kb = ka > ke ? ka - 1 : ke;
-      const double range = cpas[kb].range, tcpa = cpas[kb].tcpa;
-      const double early = std::max(range / cfg_.early_range_m, tcpa / cfg_.early_tcpa_s);
-      if (early < 1.0)
-        penalise(cfg_.penalty_late * (1.0 - early),
-                 fmt("rule 16: first action at t=%.0f s, %.0f m and %.0f s from CPA: late (early: %.0f m or ",
-                     both[ka].first->t, range, tcpa, cfg_.early_range_m) +
-                     fmt("%.0f s)", cfg_.early_tcpa_s));
-    }
-    // Rules 14 and 15: starboard.
-    if (port_dominant && g.encounter == Encounter::HeadOn)
-      penalise(cfg_.penalty_port,
-               fmt("rule 14: turned %.0f deg to port in a head-on encounter", radToDeg(max_port)));
-    if (port_dominant && g.encounter == Encounter::CrossingGiveWay)
-      penalise(cfg_.penalty_port, fmt("rule 15: turned %.0f deg to port for a ship crossing from starboard",
-                                      radToDeg(max_port)));
-    // Rule 15: not across the stand-on ship's bow. The first time the own ship crosses the target's
-    // track line after entry decides.
-    if (g.encounter == Encounter::CrossingGiveWay) {
-      for (size_t k = ke + 1; k < both.size(); ++k) {
-        const ShipState& t0 = both[k - 1].second->s;
-        const ShipState& t1 = both[k].second->s;
-        const Eigen::Vector2d u0 = courseSpeedToVelocity(t0.course, 1.0);
-        const Eigen::Vector2d u1 = courseSpeedToVelocity(t1.course, 1.0);
-        const Eigen::Vector2d rel0 = both[k - 1].first->s.position - t0.position;
-        const Eigen::Vector2d rel1 = both[k].first->s.position - t1.position;
-        const double s0 = sideOf(u0, rel0), s1 = sideOf(u1, rel1);
-        if ((s0 < 0.0) == (s1 < 0.0))
-          continue;
-        if (u1.dot(rel1) > 0.0 && rel1.norm() < cfg_.cross_ahead_range_m)
-          penalise(cfg_.penalty_ahead, fmt("rule 15: crossed %.0f m ahead of the stand-on ship at t=%.0f s",
-                                           rel1.norm(), both[k].first->t));
-        break;
-      }
-    }
-  } else if (g.role == OwnRole::StandOn) {
-    size_t ku = both.size();
-    for (size_t k = ke; k < both.size() && ku == both.size(); ++k)
-      if (cpas[k].tcpa >= 0.0 && riskLevel(cpas[k].tcpa, cpas[k].dcpa, cfg_.hu) == RiskLevel::Urgent)
-        ku = k;
-    if (ka < both.size() && ka < ku) {
-      const std::string urgent =
-          ku < both.size() ? fmt("urgent only at t=%.0f s", both[ku].first->t) : std::string("never urgent");
-      penalise(cfg_.penalty_stand_on,
-               fmt("rule 17: the stand-on ship altered (%.0f deg, speed -%.0f %%) at t=%.0f s, before the "
-                   "give-way ship's action was clearly lacking (",
-                   alter_deg, 100.0 * speed_drop, both[ka].first->t) +
-                   urgent + ")");
-    } else if (ka < both.size() && port_dominant && g.encounter == Encounter::CrossingStandOn) {
-      penalise(cfg_.penalty_port,
-               fmt("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(max_port)));
-    }
-  }
-  finishScore(factor);
+  if (p.g.role == OwnRole::GiveWay || p.g.role == OwnRole::BothGiveWay)
+    judgeGiveWay(p, r, factor);
+  else if (p.g.role == OwnRole::StandOn)
+    judgeStandOn(p, r, factor);
+  finishScore(r, factor);
   return r;
 }
 

@@ -325,164 +325,212 @@ double NmeaEmitter::reportingInterval(char ais_class, double sog, double rate_of
   return 2.0;
 }
 
+namespace {
+
+double unit01(std::mt19937_64& rng) {
+  return std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+}
+
+// A scenario sensor fault of `type` on vessel v is active at time t.
+bool faulty(const Simulation& sim, const SimVessel& v, SensorFault::Type type, double t) {
+  for (const auto& f : sim.scenario().sensor_faults)
+    if (f.type == type && f.ship == v.name && f.active(t))
+      return true;
+  return false;
+}
+
+// Radar target number of vessel i: its index, or its partner's during a swap.
+int radarNumber(const Simulation& sim, size_t i) {
+  const auto& vs = sim.vessels();
+  for (const auto& f : sim.scenario().sensor_faults)
+    if (f.type == SensorFault::Type::RadarSwap && f.active(sim.time()) &&
+        (f.ship == vs[i].name || f.with == vs[i].name))
+      if (const SimVessel* other = sim.find(f.ship == vs[i].name ? f.with : f.ship))
+        return static_cast<int>(other - vs.data());
+  return static_cast<int>(i);
+}
+
+}  // namespace
+
 void NmeaEmitter::update(const Simulation& sim, std::vector<std::string>& ais,
                          std::vector<std::string>& ttm) {
+  if (next_pos_.size() != sim.vessels().size())
+    schedule(sim);
+  loss_announced_.resize(sim.scenario().sensor_faults.size(), 0);
+  if (cfg_.ais)
+    emitAis(sim, ais);
+  if (cfg_.radar && sim.time() >= next_scan_) {
+    next_scan_ = sim.time() + cfg_.radar_period;
+    emitRadar(sim, ttm);
+  }
+}
+
+// Staggers the first reports over one interval (and the static data over 10 s), as transponders that
+// were switched on at different times would.
+void NmeaEmitter::schedule(const Simulation& sim) {
   const auto& vs = sim.vessels();
   const double t = sim.time();
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::normal_distribution<double> gauss(0.0, 1.0);
-  if (next_pos_.size() != vs.size()) {
-    // First call: stagger the first reports over one interval (and the static data over 10 s), as
-    // transponders that were switched on at different times would.
-    next_pos_.resize(vs.size());
-    next_static_.resize(vs.size());
-    for (size_t i = 0; i < vs.size(); ++i) {
-      next_pos_[i] = t + unit(rng_) * reportingInterval(vs[i].ais_class, vs[i].sog(), vs[i].state().r);
-      next_static_[i] = t + unit(rng_) * 10.0;
-    }
-    next_scan_ = t;
+  next_pos_.resize(vs.size());
+  next_static_.resize(vs.size());
+  for (size_t i = 0; i < vs.size(); ++i) {
+    next_pos_[i] = t + unit01(rng_) * reportingInterval(vs[i].ais_class, vs[i].sog(), vs[i].state().r);
+    next_static_[i] = t + unit01(rng_) * 10.0;
   }
-  const std::vector<SensorFault>& faults = sim.scenario().sensor_faults;
-  loss_announced_.resize(faults.size(), 0);
-  auto faulty = [&](const SimVessel& v, SensorFault::Type type) {
-    for (const auto& f : faults)
-      if (f.type == type && f.ship == v.name && f.active(t))
-        return true;
-    return false;
-  };
-  // Radar target number of vessel i: its index, or its partner's during a swap.
-  auto radarNumber = [&](size_t i) {
-    for (const auto& f : faults)
-      if (f.type == SensorFault::Type::RadarSwap && f.active(t) &&
-          (f.ship == vs[i].name || f.with == vs[i].name))
-        if (const SimVessel* other = sim.find(f.ship == vs[i].name ? f.with : f.ship))
-          return static_cast<int>(other - vs.data());
-    return static_cast<int>(i);
-  };
-  auto send = [&](const ais::BitWriter& w) {
-    channel_b_ = !channel_b_;
-    const auto lines = ais::toSentences(w, channel_b_ ? 'B' : 'A', seq_);
-    if (lines.size() > 1)
-      seq_ = (seq_ + 1) % 10;
-    if (cfg_.ais_dropout > 0.0 && unit(rng_) < cfg_.ais_dropout)
-      return;
-    ais.insert(ais.end(), lines.begin(), lines.end());
-    ++ais_sent_;
-  };
-  for (size_t i = 1; cfg_.ais && i < vs.size(); ++i) {
-    const SimVessel& v = vs[i];
-    if (v.arrived)
+  next_scan_ = t;
+}
+
+// One AIS message on alternate channels; a multi-sentence one takes the next sequence number. The
+// dropout loses it after that, as a missed reception would.
+void NmeaEmitter::send(const ais::BitWriter& w, std::vector<std::string>& out) {
+  channel_b_ = !channel_b_;
+  const auto lines = ais::toSentences(w, channel_b_ ? 'B' : 'A', seq_);
+  if (lines.size() > 1)
+    seq_ = (seq_ + 1) % 10;
+  if (cfg_.ais_dropout > 0.0 && unit01(rng_) < cfg_.ais_dropout)
+    return;
+  out.insert(out.end(), lines.begin(), lines.end());
+  ++ais_sent_;
+}
+
+void NmeaEmitter::emitAis(const Simulation& sim, std::vector<std::string>& out) {
+  const auto& vs = sim.vessels();
+  const double t = sim.time();
+  for (size_t i = 1; i < vs.size(); ++i) {
+    if (vs[i].arrived)
       continue;
-    if (faulty(v, SensorFault::Type::AisSilence)) {
+    if (faulty(sim, vs[i], SensorFault::Type::AisSilence, t)) {
       next_static_[i] = std::max(next_static_[i], t);  // the first reports go out when she is back
       next_pos_[i] = std::max(next_pos_[i], t);
       continue;
     }
     if (t >= next_static_[i]) {
       next_static_[i] = t + cfg_.static_interval;
-      const uint32_t bow = static_cast<uint32_t>(std::lround(v.length / 2)),
-                     port = static_cast<uint32_t>(std::lround(v.beam / 2));
-      if (v.ais_class == 'A') {
-        ais::StaticVoyageData d;
-        d.callsign.assign("SIM" + std::to_string(i));
-        d.shipname.assign(v.name);
-        d.shiptype = 70;  // cargo
-        d.to_bow = d.to_stern = std::min(bow, 511u);
-        d.to_port = d.to_starboard = std::min(port, 63u);
-        d.epfd = 1;
-        d.draught = static_cast<uint32_t>(std::min(255.0, std::lround(v.length / 20.0) * 10.0));
-        d.destination.assign(sim.scenario().name.substr(0, 20));
-        send(ais::encodeStaticVoyage(v.mmsi, d));
-      } else {
-        ais::StaticDataReport a;
-        a.part = 0;
-        a.shipname.assign(v.name);
-        send(ais::encodeStaticDataReport(v.mmsi, a));
-        ais::StaticDataReport b;
-        b.part = 1;
-        b.shiptype = 37;  // pleasure craft
-        b.callsign.assign("SIM" + std::to_string(i));
-        b.to_bow = b.to_stern = std::min(bow, 511u);
-        b.to_port = b.to_starboard = std::min(port, 63u);
-        send(ais::encodeStaticDataReport(v.mmsi, b));
-      }
+      sendStatic(sim, i, out);
     }
     if (t >= next_pos_[i]) {
-      next_pos_[i] = t + reportingInterval(v.ais_class, v.sog(), v.state().r);
-      const GeoPoint g = sim.frame().toGeodetic(v.position());
-      const uint8_t second = static_cast<uint8_t>(static_cast<long>(std::floor(t)) % 60);
-      if (v.ais_class == 'A') {
-        ais::PositionReportA r;
-        r.status = 0;  // under way using engine
-        r.turn = ais::rawTurn(v.state().r);
-        r.speed = ais::rawSpeed(v.sog());
-        r.accuracy = true;
-        r.lat = ais::rawLat(g.lat_deg);
-        r.lon = ais::rawLon(g.lon_deg);
-        r.course = ais::rawCourse(v.cog());
-        r.heading = ais::rawHeading(v.state().psi);
-        r.second = second;
-        send(ais::encodePositionA(1, v.mmsi, r));
-      } else {
-        ais::PositionReportB r;
-        r.speed = ais::rawSpeed(v.sog());
-        r.accuracy = true;
-        r.lat = ais::rawLat(g.lat_deg);
-        r.lon = ais::rawLon(g.lon_deg);
-        r.course = ais::rawCourse(v.cog());
-        r.heading = ais::rawHeading(v.state().psi);
-        r.second = second;
-        r.cs = true;
-        send(ais::encodePositionB(v.mmsi, r));
-      }
+      next_pos_[i] = t + reportingInterval(vs[i].ais_class, vs[i].sog(), vs[i].state().r);
+      sendPosition(sim, i, out);
     }
   }
-  if (cfg_.radar && t >= next_scan_) {
-    next_scan_ = t + cfg_.radar_period;
-    const SimVessel& own = vs[0];
-    const ShipState os = own.shipState();
-    for (size_t i = 1; i < vs.size(); ++i) {
-      const SimVessel& v = vs[i];
-      if (v.arrived)
-        continue;
-      const Eigen::Vector2d rel = v.position() - own.position();
-      const double range = rel.norm();
-      if (range > cfg_.radar_range)
-        continue;
-      bool lost = false;
-      for (size_t k = 0; k < faults.size(); ++k)
-        if (faults[k].type == SensorFault::Type::RadarLoss && faults[k].ship == v.name &&
-            faults[k].active(t)) {
-          lost = true;
-          if (!loss_announced_[k]) {  // the ARPA declares the target lost once, then drops it
-            loss_announced_[k] = 1;
-            arpa::TtmOut o;
-            o.number = radarNumber(i);
-            o.status = 'L';
-            o.utc_seconds_of_day = std::fmod(t, 86400.0);
-            ttm.push_back(arpa::encodeTtm(o));
-            ++ttm_sent_;
-          }
-        }
-      if (lost)
-        continue;
-      if (cfg_.radar_dropout > 0.0 && unit(rng_) < cfg_.radar_dropout)
-        continue;
-      arpa::TtmOut o;
-      o.number = radarNumber(i);
-      o.distance = std::max(0.0, range + cfg_.range_noise * gauss(rng_));
-      o.bearing = wrapTwoPi(courseOf(rel) + degToRad(cfg_.bearing_noise_deg) * gauss(rng_));
-      o.speed = std::max(0.0, v.sog() + knotsToMps(cfg_.speed_noise_kn) * gauss(rng_));
-      o.course = wrapTwoPi(v.cog() + degToRad(cfg_.course_noise_deg) * gauss(rng_));
-      const Cpa c = computeCpa(os, v.shipState());
-      o.cpa = c.dcpa;
-      o.tcpa = c.tcpa;
-      o.name = v.name.substr(0, 20);
-      o.status = 'T';
-      o.utc_seconds_of_day = std::fmod(t, 86400.0);
-      ttm.push_back(arpa::encodeTtm(o));
-      ++ttm_sent_;
-    }
+}
+
+// Static data: type 5 for class A, type 24 parts A and B for class B.
+void NmeaEmitter::sendStatic(const Simulation& sim, size_t i, std::vector<std::string>& out) {
+  const SimVessel& v = sim.vessels()[i];
+  const uint32_t bow = static_cast<uint32_t>(std::lround(v.length / 2)),
+                 port = static_cast<uint32_t>(std::lround(v.beam / 2));
+  if (v.ais_class == 'A') {
+    ais::StaticVoyageData d;
+    d.callsign.assign("SIM" + std::to_string(i));
+    d.shipname.assign(v.name);
+    d.shiptype = 70;  // cargo
+    d.to_bow = d.to_stern = std::min(bow, 511u);
+    d.to_port = d.to_starboard = std::min(port, 63u);
+    d.epfd = 1;
+    d.draught = static_cast<uint32_t>(std::min(255.0, std::lround(v.length / 20.0) * 10.0));
+    d.destination.assign(sim.scenario().name.substr(0, 20));
+    send(ais::encodeStaticVoyage(v.mmsi, d), out);
+    return;
+  }
+  ais::StaticDataReport a;
+  a.part = 0;
+  a.shipname.assign(v.name);
+  send(ais::encodeStaticDataReport(v.mmsi, a), out);
+  ais::StaticDataReport b;
+  b.part = 1;
+  b.shiptype = 37;  // pleasure craft
+  b.callsign.assign("SIM" + std::to_string(i));
+  b.to_bow = b.to_stern = std::min(bow, 511u);
+  b.to_port = b.to_starboard = std::min(port, 63u);
+  send(ais::encodeStaticDataReport(v.mmsi, b), out);
+}
+
+// Position report: type 1 for class A, type 18 for class B.
+void NmeaEmitter::sendPosition(const Simulation& sim, size_t i, std::vector<std::string>& out) {
+  const SimVessel& v = sim.vessels()[i];
+  const GeoPoint g = sim.frame().toGeodetic(v.position());
+  const uint8_t second = static_cast<uint8_t>(static_cast<long>(std::floor(sim.time())) % 60);
+  if (v.ais_class == 'A') {
+    ais::PositionReportA r;
+    r.status = 0;  // under way using engine
+    r.turn = ais::rawTurn(v.state().r);
+    r.speed = ais::rawSpeed(v.sog());
+    r.accuracy = true;
+    r.lat = ais::rawLat(g.lat_deg);
+    r.lon = ais::rawLon(g.lon_deg);
+    r.course = ais::rawCourse(v.cog());
+    r.heading = ais::rawHeading(v.state().psi);
+    r.second = second;
+    send(ais::encodePositionA(1, v.mmsi, r), out);
+    return;
+  }
+  ais::PositionReportB r;
+  r.speed = ais::rawSpeed(v.sog());
+  r.accuracy = true;
+  r.lat = ais::rawLat(g.lat_deg);
+  r.lon = ais::rawLon(g.lon_deg);
+  r.course = ais::rawCourse(v.cog());
+  r.heading = ais::rawHeading(v.state().psi);
+  r.second = second;
+  r.cs = true;
+  send(ais::encodePositionB(v.mmsi, r), out);
+}
+
+// A radar loss of vessel i is active: the ARPA declares the target lost once (a TTM with status L),
+// then drops it.
+bool NmeaEmitter::radarLost(const Simulation& sim, size_t i, std::vector<std::string>& out) {
+  const std::vector<SensorFault>& faults = sim.scenario().sensor_faults;
+  const double t = sim.time();
+  bool lost = false;
+  for (size_t k = 0; k < faults.size(); ++k) {
+    if (faults[k].type != SensorFault::Type::RadarLoss || faults[k].ship != sim.vessels()[i].name ||
+        !faults[k].active(t))
+      continue;
+    lost = true;
+    if (loss_announced_[k])
+      continue;
+    loss_announced_[k] = 1;
+    arpa::TtmOut o;
+    o.number = radarNumber(sim, i);
+    o.status = 'L';
+    o.utc_seconds_of_day = std::fmod(t, 86400.0);
+    out.push_back(arpa::encodeTtm(o));
+    ++ttm_sent_;
+  }
+  return lost;
+}
+
+// One radar scan: a TTM per vessel within range, with the configured measurement noise.
+void NmeaEmitter::emitRadar(const Simulation& sim, std::vector<std::string>& out) {
+  const auto& vs = sim.vessels();
+  const double t = sim.time();
+  std::normal_distribution<double> gauss(0.0, 1.0);  // one per scan: it keeps a spare draw
+  const SimVessel& own = vs[0];
+  const ShipState os = own.shipState();
+  for (size_t i = 1; i < vs.size(); ++i) {
+    const SimVessel& v = vs[i];
+    if (v.arrived)
+      continue;
+    const Eigen::Vector2d rel = v.position() - own.position();
+    const double range = rel.norm();
+    if (range > cfg_.radar_range || radarLost(sim, i, out))
+      continue;
+    if (cfg_.radar_dropout > 0.0 && unit01(rng_) < cfg_.radar_dropout)
+      continue;
+    arpa::TtmOut o;
+    o.number = radarNumber(sim, i);
+    o.distance = std::max(0.0, range + cfg_.range_noise * gauss(rng_));
+    o.bearing = wrapTwoPi(courseOf(rel) + degToRad(cfg_.bearing_noise_deg) * gauss(rng_));
+    o.speed = std::max(0.0, v.sog() + knotsToMps(cfg_.speed_noise_kn) * gauss(rng_));
+    o.course = wrapTwoPi(v.cog() + degToRad(cfg_.course_noise_deg) * gauss(rng_));
+    const Cpa c = computeCpa(os, v.shipState());
+    o.cpa = c.dcpa;
+    o.tcpa = c.tcpa;
+    o.name = v.name.substr(0, 20);
+    o.status = 'T';
+    o.utc_seconds_of_day = std::fmod(t, 86400.0);
+    out.push_back(arpa::encodeTtm(o));
+    ++ttm_sent_;
   }
 }
 

@@ -207,9 +207,18 @@ private:
     double path_length = 0.0;
     std::vector<std::pair<double, double>> setpoints;  // (t, course) on change
   };
+  // The instants at which ships i and j are both in the scenario, and the passage of a target from the
+  // entry into the rules to the closest approach (evaluation.cpp).
+  using Instants = std::vector<std::pair<const Point*, const Point*>>;
+  struct Passage;
   int index(const std::string& name) const;
   ShipResult evaluateShip(size_t i) const;
   TargetResult evaluatePair(size_t i, size_t j) const;
+  Instants commonInstants(size_t i, size_t j) const;
+  Passage passage(const Instants& both, const std::vector<Cpa>& cpas, size_t ke) const;
+  void judgeGiveWay(const Passage& p, TargetResult& r, double& factor) const;
+  void judgeStandOn(const Passage& p, TargetResult& r, double& factor) const;
+  void finishScore(TargetResult& r, double factor) const;
   std::vector<Manoeuvre> manoeuvres(const Track& tr) const;
 
   EvaluationConfig cfg_;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "asv_core/codec/nmea_encode.h"
 #include "asv_core/common/geodesy.h"
 #include "asv_core/risk/risk_level.h"
 #include "asv_core/sim/autopilot.h"
@@ -155,6 +156,14 @@ public:
   uint64_t ttmSent() const { return ttm_sent_; }
 
 private:
+  void schedule(const Simulation& sim);  // the first call: staggered first reports
+  void send(const ais::BitWriter& w, std::vector<std::string>& out);
+  void emitAis(const Simulation& sim, std::vector<std::string>& out);
+  void sendStatic(const Simulation& sim, size_t i, std::vector<std::string>& out);
+  void sendPosition(const Simulation& sim, size_t i, std::vector<std::string>& out);
+  void emitRadar(const Simulation& sim, std::vector<std::string>& out);
+  bool radarLost(const Simulation& sim, size_t i, std::vector<std::string>& out);
+
   EmitterConfig cfg_;
   std::mt19937_64 rng_;
   std::vector<double> next_pos_, next_static_;
