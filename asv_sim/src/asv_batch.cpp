@@ -237,191 +237,252 @@ double wallSeconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-// Runs one seed; returns the result.
-asv::RunResult runOnce(const Options& o, const asv::Scenario& sc, const std::string& own_planner,
-                       uint64_t seed, asv_planning::PluginLoader& loader, Progress& progress, int run_index) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  asv::SimConfig simcfg;
-  simcfg.dt = o.dt;
-  asv::Simulation sim(sc, simcfg);
-  const auto& vs = sim.vessels();
-  asv::RunRecorder rec(asv::EvaluationConfig{}, asv::RunInfo::fromScenario(sc, own_planner, seed));
+// One seed of a scenario: the simulation, the ships that plan through plugins (as planner_node
+// does), the DSSA exchange group (two or more DSSA ships negotiate, as their ROS agents do), the
+// recorder and the trajectory file.
+class BatchRun {
+public:
+  BatchRun(const Options& o, const asv::Scenario& sc, const std::string& own_planner, uint64_t seed,
+           asv_planning::PluginLoader& loader);
+  asv::RunResult run(Progress& progress, int run_index);
 
-  // Who plans with what.
-  std::vector<std::string> planner_of(vs.size());
-  planner_of[0] = own_planner;
+private:
+  void addPluginShips(asv_planning::PluginLoader& loader);
+  void addDssaGroup();
+  void openTrajectory();
+  void writeTrajectory();
+  void sample();
+  void planPluginShip(PluginShip& ps, double now);
+  void dssaPhase(double now);
+
+  const std::chrono::steady_clock::time_point wall0_ = std::chrono::steady_clock::now();
+  const Options& o_;
+  const asv::Scenario& sc_;
+  const uint64_t seed_;
+  asv::Simulation sim_;
+  asv::RunRecorder rec_;
+  std::vector<std::string> planner_of_;  // per vessel: its planner, "" or "none" for none
+  std::vector<size_t> dssa_ships_;
+  bool exchange_mode_ = false;  // two or more DSSA ships: they negotiate
+  std::vector<std::unique_ptr<PluginShip>> plugin_ships_;
+  std::vector<asv::DssaAgent> agents_;
+  std::vector<std::mt19937_64> rngs_;
+  std::vector<Eigen::Vector2d> agent_goals_;
+  std::unique_ptr<asv::DssaExchange> exchange_;
+  double dssa_period_ = 10.0;
+  std::ofstream traj_;
+};
+
+asv::SimConfig simConfig(const Options& o) {
+  asv::SimConfig c;
+  c.dt = o.dt;
+  return c;
+}
+
+BatchRun::BatchRun(const Options& o, const asv::Scenario& sc, const std::string& own_planner, uint64_t seed,
+                   asv_planning::PluginLoader& loader)
+    : o_(o),
+      sc_(sc),
+      seed_(seed),
+      sim_(sc, simConfig(o)),
+      rec_(asv::EvaluationConfig{}, asv::RunInfo::fromScenario(sc, own_planner, seed)) {
+  const auto& vs = sim_.vessels();
+  planner_of_.resize(vs.size());
+  planner_of_[0] = own_planner;
   for (size_t i = 1; i < vs.size(); ++i)
     if (sc.targets[i - 1].behaviour == asv::Behaviour::Planner)
-      planner_of[i] = sc.targets[i - 1].planner.empty() ? "none" : sc.targets[i - 1].planner;
-  std::vector<size_t> dssa_ships;
+      planner_of_[i] = sc.targets[i - 1].planner.empty() ? "none" : sc.targets[i - 1].planner;
   for (size_t i = 0; i < vs.size(); ++i)
-    if (isDssa(planner_of[i]))
-      dssa_ships.push_back(i);
-  const bool exchange_mode = dssa_ships.size() >= 2;
+    if (isDssa(planner_of_[i]))
+      dssa_ships_.push_back(i);
+  exchange_mode_ = dssa_ships_.size() >= 2;
+  addPluginShips(loader);
+  if (exchange_mode_)
+    addDssaGroup();
+  openTrajectory();
+}
 
-  std::vector<std::unique_ptr<PluginShip>> plugin_ships;
+void BatchRun::addPluginShips(asv_planning::PluginLoader& loader) {
+  const auto& vs = sim_.vessels();
   for (size_t i = 0; i < vs.size(); ++i) {
-    const std::string& p = planner_of[i];
-    if (p.empty() || p == "none" || (exchange_mode && isDssa(p)))
+    const std::string& p = planner_of_[i];
+    if (p.empty() || p == "none" || (exchange_mode_ && isDssa(p)))
       continue;
     asv::PlanFollowerConfig fc;
-    fc.time_budget = o.time_budget;
-    fc.seed = static_cast<int>(seed);
+    fc.time_budget = o_.time_budget;
+    fc.seed = static_cast<int>(seed_);
     fc.cruise_speed = vs[i].cruise_speed;
-    fc.min_separation = sc.min_separation;
-    auto ps = std::make_unique<PluginShip>(PluginShip{i, p, loader.load(p, sc.planner_params.sub(p)),
+    fc.min_separation = sc_.min_separation;
+    auto ps = std::make_unique<PluginShip>(PluginShip{i, p, loader.load(p, sc_.planner_params.sub(p)),
                                                       asv::PlanFollower(fc), asv::RiskAssessor()});
     if (vs[i].goal)
       ps->follower.setGoal(*vs[i].goal);
-    ps->follower.setObstacles(sc.obstacles);
-    plugin_ships.push_back(std::move(ps));
+    ps->follower.setObstacles(sc_.obstacles);
+    plugin_ships_.push_back(std::move(ps));
   }
+}
 
-  // DSSA exchange group.
-  std::vector<asv::DssaAgent> agents;
-  std::vector<std::mt19937_64> rngs;
-  std::vector<Eigen::Vector2d> agent_goals;
-  std::unique_ptr<asv::DssaExchange> exchange;
-  double dssa_period = 10.0;
-  if (exchange_mode) {
-    const asv::DssaConfig group_cfg = dssaConfig(planner_of[dssa_ships.front()], sc.planner_params);
-    dssa_period = group_cfg.time_step;
-    exchange = std::make_unique<asv::DssaExchange>(group_cfg);
-    for (size_t i : dssa_ships) {
-      const asv::DssaConfig cfg = dssaConfig(planner_of[i], sc.planner_params);
-      const asv::DssaShipSpeeds speeds = asv::dssaShipSpeeds(
-          cfg, vs[i].cruise_speed, 0.0, std::max(vs[i].cruise_speed, asv::OwnShipLimits{}.max_speed));
-      agents.emplace_back(static_cast<int>(i), cfg, speeds);
-      rngs.emplace_back(asv::dssaAgentSeed(seed, static_cast<int>(i)));
-      agent_goals.push_back(
-          vs[i].goal ? *vs[i].goal : vs[i].position() + asv::courseSpeedToVelocity(vs[i].cruise_course, 1e6));
-    }
+void BatchRun::addDssaGroup() {
+  const auto& vs = sim_.vessels();
+  const asv::DssaConfig group_cfg = dssaConfig(planner_of_[dssa_ships_.front()], sc_.planner_params);
+  dssa_period_ = group_cfg.time_step;
+  exchange_ = std::make_unique<asv::DssaExchange>(group_cfg);
+  for (size_t i : dssa_ships_) {
+    const asv::DssaConfig cfg = dssaConfig(planner_of_[i], sc_.planner_params);
+    const asv::DssaShipSpeeds speeds = asv::dssaShipSpeeds(
+        cfg, vs[i].cruise_speed, 0.0, std::max(vs[i].cruise_speed, asv::OwnShipLimits{}.max_speed));
+    agents_.emplace_back(static_cast<int>(i), cfg, speeds);
+    rngs_.emplace_back(asv::dssaAgentSeed(seed_, static_cast<int>(i)));
+    agent_goals_.push_back(
+        vs[i].goal ? *vs[i].goal : vs[i].position() + asv::courseSpeedToVelocity(vs[i].cruise_course, 1e6));
   }
+}
 
-  std::ofstream traj;
-  if (!o.trajectory.empty()) {
-    const std::string path = trajectoryPath(o, seed);
-    traj.open(path);
-    if (!traj)
-      throw std::runtime_error("cannot write trajectory file " + path);
-    traj << "t_s,ship,x_m,y_m,course_deg,speed_mps\n";
+void BatchRun::openTrajectory() {
+  if (o_.trajectory.empty())
+    return;
+  const std::string path = trajectoryPath(o_, seed_);
+  traj_.open(path);
+  if (!traj_)
+    throw std::runtime_error("cannot write trajectory file " + path);
+  traj_ << "t_s,ship,x_m,y_m,course_deg,speed_mps\n";
+}
+
+void BatchRun::writeTrajectory() {
+  if (!traj_.is_open())
+    return;
+  char buf[256];
+  for (const auto& v : sim_.vessels()) {
+    std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.2f\n", sim_.time(), v.name.c_str(),
+                  v.position().x(), v.position().y(), asv::radToDeg(v.cog()), v.sog());
+    traj_ << buf;
   }
-  auto writeTrajectory = [&]() {
-    if (!traj.is_open())
-      return;
-    char buf[256];
-    for (const auto& v : vs) {
-      std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.2f\n", sim.time(), v.name.c_str(),
-                    v.position().x(), v.position().y(), asv::radToDeg(v.cog()), v.sog());
-      traj << buf;
-    }
-  };
-  auto sample = [&]() {
-    std::vector<asv::ShipSample> ss;
-    ss.reserve(vs.size());
-    for (const auto& v : vs) {
-      asv::ShipSample s;
-      s.name = v.name;
-      s.state = v.shipState();
-      s.course_setpoint = v.course_sp;
-      s.active = !v.arrived;
-      ss.push_back(std::move(s));
-    }
-    rec.addSample(sim.time(), ss);
-  };
+}
 
+void BatchRun::sample() {
+  std::vector<asv::ShipSample> ss;
+  ss.reserve(sim_.vessels().size());
+  for (const auto& v : sim_.vessels()) {
+    asv::ShipSample s;
+    s.name = v.name;
+    s.state = v.shipState();
+    s.course_setpoint = v.course_sp;
+    s.active = !v.arrived;
+    ss.push_back(std::move(s));
+  }
+  rec_.addSample(sim_.time(), ss);
+}
+
+// One set-point tick of a plugin ship, as planner_node's: replan when the follower says so (a plugin
+// error becomes the fallback), then steer the plan's set-point.
+void BatchRun::planPluginShip(PluginShip& ps, double now) {
+  const asv::SimVessel& v = sim_.vessels()[ps.index];
+  if (v.arrived)
+    return;
+  const std::vector<asv::PlannerTarget> targets = plannerTargets(sim_, ps.index, ps.risk);
+  ps.follower.updateOwn(v.shipState());
+  std::string why;
+  if (ps.follower.replanNeeded(now, targets, why)) {
+    const asv::PlanningProblem pr = ps.follower.buildProblem(now, targets);
+    const auto t0 = std::chrono::steady_clock::now();
+    asv::Plan plan;
+    try {
+      plan = asv::planObservingGiveWay([&](const asv::PlanningProblem& p) { return ps.plugin->makePlan(p); },
+                                       pr);
+    } catch (const std::exception& e) {
+      plan = ps.follower.fallback(targets, std::string("plugin error: ") + e.what());
+    }
+    plan.compute_time = wallSeconds(t0);
+    if (ps.index == 0)
+      rec_.addPlanTime(plan.compute_time);
+    ps.follower.acceptPlan(plan, now, targets, why);
+  }
+  double course = 0.0, speed = 0.0;
+  if (ps.follower.setpoint(course, speed)) {
+    sim_.setSetpoint(v.name, course, speed);
+    rec_.addSetpoint(now, v.name, course);
+  }
+}
+
+// One DSSA search phase (Hirayama et al. 2019, Fig. 1): every ship still under way takes part, then
+// steers its intention.
+void BatchRun::dssaPhase(double now) {
+  const auto& vs = sim_.vessels();
+  std::vector<asv::DssaAgent> active;
+  std::vector<std::mt19937_64> active_rngs;
+  std::vector<size_t> slot;
+  for (size_t a = 0; a < agents_.size(); ++a) {
+    const asv::SimVessel& v = vs[static_cast<size_t>(agents_[a].id())];
+    for (size_t b = 0; b < agents_.size(); ++b)
+      if (vs[static_cast<size_t>(agents_[b].id())].arrived)
+        agents_[a].forget(agents_[b].id());
+    if (v.arrived)
+      continue;
+    agents_[a].setOwn(v.shipState(), agent_goals_[a], now);
+    slot.push_back(a);
+  }
+  if (slot.empty())
+    return;
+  for (size_t a : slot) {
+    active.push_back(std::move(agents_[a]));
+    active_rngs.push_back(rngs_[a]);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  exchange_->run(active, active_rngs);
+  const double took = wallSeconds(t0);
+  if (isDssa(planner_of_[0]) && !vs[0].arrived)
+    rec_.addPlanTime(took);
+  for (size_t k = 0; k < slot.size(); ++k) {
+    agents_[slot[k]] = std::move(active[k]);
+    rngs_[slot[k]] = active_rngs[k];
+    const asv::DssaIntention& in = agents_[slot[k]].intention();
+    const std::string& name = vs[static_cast<size_t>(agents_[slot[k]].id())].name;
+    sim_.setSetpoint(name, in.course, in.speed);
+    rec_.addSetpoint(now, name, in.course);
+  }
+}
+
+asv::RunResult BatchRun::run(Progress& progress, int run_index) {
   const double setpoint_period = 1.0;  // planner_node's setpoint_rate (1 Hz)
   double next_tick = 0.0, next_dssa = 0.0, next_traj = 0.0;
   size_t events_done = 0;
   sample();
-  const long steps = static_cast<long>(std::ceil(sc.duration / o.dt - 1e-9));
-  for (long k = 0; !sim.finished(); ++k) {
-    const double now = sim.time();
+  const long steps = static_cast<long>(std::ceil(sc_.duration / o_.dt - 1e-9));
+  for (long k = 0; !sim_.finished(); ++k) {
+    const double now = sim_.time();
     if (now >= next_traj - 1e-9) {
       writeTrajectory();
-      next_traj += o.sample_period;
+      next_traj += o_.sample_period;
     }
     if (now >= next_tick - 1e-9) {
       next_tick += setpoint_period;
-      for (auto& ps : plugin_ships) {
-        const asv::SimVessel& v = vs[ps->index];
-        if (v.arrived)
-          continue;
-        const std::vector<asv::PlannerTarget> targets = plannerTargets(sim, ps->index, ps->risk);
-        ps->follower.updateOwn(v.shipState());
-        std::string why;
-        if (ps->follower.replanNeeded(now, targets, why)) {
-          const asv::PlanningProblem pr = ps->follower.buildProblem(now, targets);
-          const auto t0 = std::chrono::steady_clock::now();
-          asv::Plan plan;
-          try {
-            plan = asv::planObservingGiveWay(
-                [&](const asv::PlanningProblem& p) { return ps->plugin->makePlan(p); }, pr);
-          } catch (const std::exception& e) {
-            plan = ps->follower.fallback(targets, std::string("plugin error: ") + e.what());
-          }
-          plan.compute_time = wallSeconds(t0);
-          if (ps->index == 0)
-            rec.addPlanTime(plan.compute_time);
-          ps->follower.acceptPlan(plan, now, targets, why);
-        }
-        double course = 0.0, speed = 0.0;
-        if (ps->follower.setpoint(course, speed)) {
-          sim.setSetpoint(v.name, course, speed);
-          rec.addSetpoint(now, v.name, course);
-        }
-      }
+      for (auto& ps : plugin_ships_)
+        planPluginShip(*ps, now);
     }
-    if (exchange_mode && now >= next_dssa - 1e-9) {
-      next_dssa += dssa_period;
-      // Fig. 1: every ship still under way takes part in one search phase, then steers its intention.
-      std::vector<asv::DssaAgent> active;
-      std::vector<std::mt19937_64> active_rngs;
-      std::vector<size_t> slot;
-      for (size_t a = 0; a < agents.size(); ++a) {
-        const asv::SimVessel& v = vs[static_cast<size_t>(agents[a].id())];
-        for (size_t b = 0; b < agents.size(); ++b)
-          if (vs[static_cast<size_t>(agents[b].id())].arrived)
-            agents[a].forget(agents[b].id());
-        if (v.arrived)
-          continue;
-        agents[a].setOwn(v.shipState(), agent_goals[a], now);
-        slot.push_back(a);
-      }
-      if (!slot.empty()) {
-        for (size_t a : slot) {
-          active.push_back(std::move(agents[a]));
-          active_rngs.push_back(rngs[a]);
-        }
-        const auto t0 = std::chrono::steady_clock::now();
-        exchange->run(active, active_rngs);
-        const double took = wallSeconds(t0);
-        if (isDssa(planner_of[0]) && !vs[0].arrived)
-          rec.addPlanTime(took);
-        for (size_t k2 = 0; k2 < slot.size(); ++k2) {
-          agents[slot[k2]] = std::move(active[k2]);
-          rngs[slot[k2]] = active_rngs[k2];
-          const asv::DssaIntention& in = agents[slot[k2]].intention();
-          const std::string& name = vs[static_cast<size_t>(agents[slot[k2]].id())].name;
-          sim.setSetpoint(name, in.course, in.speed);
-          rec.addSetpoint(now, name, in.course);
-        }
-      }
+    if (exchange_mode_ && now >= next_dssa - 1e-9) {
+      next_dssa += dssa_period_;
+      dssaPhase(now);
     }
-    sim.step();
+    sim_.step();
     sample();
-    const auto& ev = sim.events();
+    const auto& ev = sim_.events();
     for (; events_done < ev.size(); ++events_done)
-      rec.addEvent(ev[events_done]);
+      rec_.addEvent(ev[events_done]);
     if (k % 200 == 0)
       progress.update(run_index, std::min(1.0, static_cast<double>(k) / std::max<long>(1, steps)));
   }
   writeTrajectory();
-  rec.setWallTime(wallSeconds(wall0));
-  asv::RunResult r = rec.finish();
-  if (o.deterministic)
+  rec_.setWallTime(wallSeconds(wall0_));
+  asv::RunResult r = rec_.finish();
+  if (o_.deterministic)
     asv::zeroWallClock(r);
   return r;
+}
+
+// Runs one seed; returns the result.
+asv::RunResult runOnce(const Options& o, const asv::Scenario& sc, const std::string& own_planner,
+                       uint64_t seed, asv_planning::PluginLoader& loader, Progress& progress, int run_index) {
+  return BatchRun(o, sc, own_planner, seed, loader).run(progress, run_index);
 }
 
 }  // namespace
