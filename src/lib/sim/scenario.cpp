@@ -323,21 +323,8 @@ std::vector<const ScenarioShip*> Scenario::planningShips() const {
 
 namespace {
 
-Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
-  const Ctx c(source);
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw ScenarioError(source + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
-  if (!root.IsMap())
-    throw ScenarioError(source + ": a scenario file must be a YAML mapping");
-  c.onlyKeys(root, "",
-             {"format", "name", "description", "duration_s", "origin", "safety", "own_ship", "targets",
-              "static_obstacles", "planner_params", "sensor_faults"});
-  Scenario s;
-  s.source = source;
+// format, name, description, duration_s, origin and safety.
+void readHeader(const Ctx& c, const YAML::Node& root, Scenario& s) {
   // Compared as a double: casting an arbitrary number (1e300) to int first is undefined behaviour.
   if (c.number(root, "format", "") != 1.0)
     c.fail(root["format"], "format", "unsupported format (this stack reads format 1)");
@@ -363,6 +350,26 @@ Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
     if (s.min_separation <= 0.0)
       c.fail(sf, "safety.min_separation_m", "must be > 0 m");
   }
+}
+
+// Ships that start overlapping: closer than half their lengths summed (or 10 m for unknown lengths).
+void checkOverlap(const Ctx& c, const Scenario& s, const RawShip& own, const std::vector<RawShip>& targets) {
+  std::vector<std::pair<const ScenarioShip*, const RawShip*>> all{{&s.own, &own}};
+  for (size_t i = 0; i < s.targets.size(); ++i)
+    all.push_back({&s.targets[i], &targets[i]});
+  for (size_t i = 0; i < all.size(); ++i)
+    for (size_t j = i + 1; j < all.size(); ++j) {
+      const double need = std::max(10.0, 0.5 * (all[i].first->length + all[j].first->length));
+      const double d = (all[i].first->position - all[j].first->position).norm();
+      if (d < need)
+        c.fail(all[j].second->node["position"], all[j].first->name + ".position",
+               "starts overlapping '" + all[i].first->name + "' (" + std::to_string(d) + " m apart)");
+    }
+}
+
+// own_ship and targets, with positions resolved in the map frame (relative ones from the own ship's
+// start); names unique, no two ships overlapping.
+void readShips(const Ctx& c, const YAML::Node& root, Scenario& s) {
   if (!root["own_ship"])
     c.fail(root, "own_ship", "missing");
   RawShip own = readShip(c, root["own_ship"], "own_ship", true);
@@ -391,77 +398,93 @@ Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
     if (!names.insert(r.ship.name).second)
       c.fail(r.node["name"], "name", "duplicate ship name '" + r.ship.name + "'");
   }
-  // Ships that start overlapping: closer than half their lengths summed (or 10 m for unknown lengths).
-  std::vector<std::pair<const ScenarioShip*, const RawShip*>> all{{&s.own, &own}};
-  for (size_t i = 0; i < s.targets.size(); ++i)
-    all.push_back({&s.targets[i], &targets[i]});
-  for (size_t i = 0; i < all.size(); ++i)
-    for (size_t j = i + 1; j < all.size(); ++j) {
-      const double need = std::max(10.0, 0.5 * (all[i].first->length + all[j].first->length));
-      const double d = (all[i].first->position - all[j].first->position).norm();
-      if (d < need)
-        c.fail(all[j].second->node["position"], all[j].first->name + ".position",
-               "starts overlapping '" + all[i].first->name + "' (" + std::to_string(d) + " m apart)");
-    }
-  if (root["static_obstacles"]) {
-    const YAML::Node obs = root["static_obstacles"];
-    if (!obs.IsSequence())
-      c.fail(obs, "static_obstacles", "expected a list");
-    for (size_t i = 0; i < obs.size(); ++i) {
-      const std::string w = "static_obstacles[" + std::to_string(i) + "]";
-      c.onlyKeys(obs[i], w, {"name", "polygon"});
-      StaticObstacle o;
-      o.name = c.text(obs[i], "name", w + ".");
-      const YAML::Node poly = obs[i]["polygon"];
-      if (!poly || !poly.IsSequence() || poly.size() < 3)
-        c.fail(obs[i], w + ".polygon", "needs at least 3 vertices");
-      for (size_t k = 0; k < poly.size(); ++k)
-        o.polygon.push_back(resolve(readPoint(c, poly[k], w + ".polygon[" + std::to_string(k) + "]", false),
-                                    frame, own_start));
-      for (const auto* ship : {&s.own})
-        if (pointInPolygon(o.polygon, ship->position))
-          c.fail(obs[i], w, "the own ship starts inside this obstacle");
-      s.obstacles.push_back(std::move(o));
-    }
+  checkOverlap(c, s, own, targets);
+}
+
+// static_obstacles: named polygons (3 or more vertices) that the own ship does not start inside.
+void readObstacles(const Ctx& c, const YAML::Node& root, Scenario& s) {
+  if (!root["static_obstacles"])
+    return;
+  const YAML::Node obs = root["static_obstacles"];
+  if (!obs.IsSequence())
+    c.fail(obs, "static_obstacles", "expected a list");
+  const LocalFrame frame = s.frame();
+  for (size_t i = 0; i < obs.size(); ++i) {
+    const std::string w = "static_obstacles[" + std::to_string(i) + "]";
+    c.onlyKeys(obs[i], w, {"name", "polygon"});
+    StaticObstacle o;
+    o.name = c.text(obs[i], "name", w + ".");
+    const YAML::Node poly = obs[i]["polygon"];
+    if (!poly || !poly.IsSequence() || poly.size() < 3)
+      c.fail(obs[i], w + ".polygon", "needs at least 3 vertices");
+    for (size_t k = 0; k < poly.size(); ++k)
+      o.polygon.push_back(resolve(readPoint(c, poly[k], w + ".polygon[" + std::to_string(k) + "]", false),
+                                  frame, s.own.position));
+    if (pointInPolygon(o.polygon, s.own.position))
+      c.fail(obs[i], w, "the own ship starts inside this obstacle");
+    s.obstacles.push_back(std::move(o));
   }
+}
+
+// One sensor_faults entry: type, the target(s) it concerns, start and duration.
+SensorFault readSensorFault(const Ctx& c, const YAML::Node& n, const std::string& w, const Scenario& s) {
+  c.onlyKeys(n, w, {"type", "ship", "with", "start_s", "duration_s"});
+  SensorFault f;
+  const std::string type = c.text(n, "type", w + ".");
+  if (type == "ais_silence")
+    f.type = SensorFault::Type::AisSilence;
+  else if (type == "radar_loss")
+    f.type = SensorFault::Type::RadarLoss;
+  else if (type == "radar_swap")
+    f.type = SensorFault::Type::RadarSwap;
+  else
+    c.fail(n["type"], w + ".type", "must be ais_silence, radar_loss or radar_swap");
+  auto target = [&](const std::string& key) {
+    const std::string name = c.text(n, key, w + ".");
+    for (const auto& t : s.targets)
+      if (t.name == name)
+        return name;
+    c.fail(n[key], w + "." + key, "no target named '" + name + "'");
+  };
+  f.ship = target("ship");
+  if (f.type == SensorFault::Type::RadarSwap) {
+    f.with = target("with");
+    if (f.with == f.ship)
+      c.fail(n["with"], w + ".with", "a ship cannot swap with herself");
+  } else if (n["with"]) {
+    c.fail(n["with"], w + ".with", "only for radar_swap");
+  }
+  f.start = c.number(n, "start_s", w + ".");
+  f.duration = c.number(n, "duration_s", w + ".");
+  if (!(f.start >= 0.0) || !(f.duration > 0.0) || f.start + f.duration > 1e7)
+    c.fail(n, w, "needs start_s >= 0 and duration_s > 0");
+  return f;
+}
+
+Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
+  const Ctx c(source);
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    throw ScenarioError(source + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (!root.IsMap())
+    throw ScenarioError(source + ": a scenario file must be a YAML mapping");
+  c.onlyKeys(root, "",
+             {"format", "name", "description", "duration_s", "origin", "safety", "own_ship", "targets",
+              "static_obstacles", "planner_params", "sensor_faults"});
+  Scenario s;
+  s.source = source;
+  readHeader(c, root, s);
+  readShips(c, root, s);
+  readObstacles(c, root, s);
   if (root["sensor_faults"]) {
     const YAML::Node fl = root["sensor_faults"];
     if (!fl.IsSequence())
       c.fail(fl, "sensor_faults", "expected a list");
-    for (size_t i = 0; i < fl.size(); ++i) {
-      const std::string w = "sensor_faults[" + std::to_string(i) + "]";
-      c.onlyKeys(fl[i], w, {"type", "ship", "with", "start_s", "duration_s"});
-      SensorFault f;
-      const std::string type = c.text(fl[i], "type", w + ".");
-      if (type == "ais_silence")
-        f.type = SensorFault::Type::AisSilence;
-      else if (type == "radar_loss")
-        f.type = SensorFault::Type::RadarLoss;
-      else if (type == "radar_swap")
-        f.type = SensorFault::Type::RadarSwap;
-      else
-        c.fail(fl[i]["type"], w + ".type", "must be ais_silence, radar_loss or radar_swap");
-      auto target = [&](const std::string& key) {
-        const std::string name = c.text(fl[i], key, w + ".");
-        for (const auto& t : s.targets)
-          if (t.name == name)
-            return name;
-        c.fail(fl[i][key], w + "." + key, "no target named '" + name + "'");
-      };
-      f.ship = target("ship");
-      if (f.type == SensorFault::Type::RadarSwap) {
-        f.with = target("with");
-        if (f.with == f.ship)
-          c.fail(fl[i]["with"], w + ".with", "a ship cannot swap with herself");
-      } else if (fl[i]["with"]) {
-        c.fail(fl[i]["with"], w + ".with", "only for radar_swap");
-      }
-      f.start = c.number(fl[i], "start_s", w + ".");
-      f.duration = c.number(fl[i], "duration_s", w + ".");
-      if (!(f.start >= 0.0) || !(f.duration > 0.0) || f.start + f.duration > 1e7)
-        c.fail(fl[i], w, "needs start_s >= 0 and duration_s > 0");
-      s.sensor_faults.push_back(f);
-    }
+    for (size_t i = 0; i < fl.size(); ++i)
+      s.sensor_faults.push_back(readSensorFault(c, fl[i], "sensor_faults[" + std::to_string(i) + "]", s));
   }
   if (root["planner_params"]) {
     std::size_t budget = kMaxPlannerParamNodes;
