@@ -137,155 +137,224 @@ DssaPaperFigures dssaPaperFigures(const std::string& scenario, const std::string
   return {};
 }
 
-DssaRunResult runDssaSimulation(const DssaScenario& scenario, const DssaConfig& config, uint64_t seed,
-                                const DssaSimOptions& options) {
-  const std::size_t n = scenario.ships.size();
-  const double dt = config.time_step;
-  const double collide =
-      options.collision_distance > 0.0 ? options.collision_distance : config.collision_distance;
+namespace {
 
-  struct Ship {
-    ShipState state;
-    bool active = true;
-  };
-  std::vector<Ship> ships(n);
-  DssaRunResult res;
-  res.ships.resize(n);
-  res.min_separation = std::numeric_limits<double>::infinity();
+// One control phase (Fig. 1): per active agent, where it starts, its velocity, the fraction of the
+// step it moves and whether it arrives.
+struct Moves {
+  std::vector<Eigen::Vector2d> p0, v;
+  std::vector<double> frac;
+  std::vector<bool> arrived;
+  std::vector<std::size_t> docking;  // the goal within this move but off the intended track
+};
 
+// The simulation of the paper's experiments (Sec. 5): search phases of the exchange, then every ship
+// moves one time step with her intention.
+class DssaRun {
+public:
+  DssaRun(const DssaScenario& scenario, const DssaConfig& config, uint64_t seed,
+          const DssaSimOptions& options);
+  DssaRunResult run();
+
+private:
+  void searchPhase(double now);
+  Moves plannedMoves() const;
+  void dock(Moves& mv) const;
+  void checkSeparation(const Moves& mv);
+  void applyMoves(const Moves& mv, double now);
+  void removeArrived(const Moves& mv);
+  void summarise(int steps);
+
+  const DssaScenario& scenario_;
+  const DssaSimOptions& options_;
+  const double dt_, collide_;
+  const DssaExchange exchange_;
+  std::vector<ShipState> ships_;
   // Agents live for the whole run, so a ship's last known intentions of the others carry over.
-  std::vector<DssaAgent> agents;
-  std::vector<std::mt19937_64> rngs;
-  for (std::size_t i = 0; i < n; ++i) {
+  std::vector<DssaAgent> agents_;
+  std::vector<std::mt19937_64> rngs_;
+  DssaRunResult res_;
+  long rounds_total_ = 0;
+};
+
+DssaRun::DssaRun(const DssaScenario& scenario, const DssaConfig& config, uint64_t seed,
+                 const DssaSimOptions& options)
+    : scenario_(scenario),
+      options_(options),
+      dt_(config.time_step),
+      collide_(options.collision_distance > 0.0 ? options.collision_distance : config.collision_distance),
+      exchange_(config),
+      ships_(scenario.ships.size()) {
+  res_.ships.resize(ships_.size());
+  res_.min_separation = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < ships_.size(); ++i) {
     const DssaSimShip& s = scenario.ships[i];
-    ships[i].state.id = s.name;
-    ships[i].state.position = s.start;
-    ships[i].state.course = trueBearing(s.start, s.goal);
-    ships[i].state.heading = ships[i].state.course;
-    ships[i].state.speed = s.speeds.ref;
-    res.ships[i].straight = (s.goal - s.start).norm();
+    ships_[i].id = s.name;
+    ships_[i].position = s.start;
+    ships_[i].course = trueBearing(s.start, s.goal);
+    ships_[i].heading = ships_[i].course;
+    ships_[i].speed = s.speeds.ref;
+    res_.ships[i].straight = (s.goal - s.start).norm();
     if (options.record_trajectories)
-      res.ships[i].trajectory.push_back(s.start);
-    agents.emplace_back(static_cast<int>(i), config, s.speeds);
-    rngs.emplace_back(dssaAgentSeed(seed, static_cast<int>(i)));
+      res_.ships[i].trajectory.push_back(s.start);
+    agents_.emplace_back(static_cast<int>(i), config, s.speeds);
+    rngs_.emplace_back(dssaAgentSeed(seed, static_cast<int>(i)));
   }
-  const DssaExchange exchange(config);
-  long rounds_total = 0;
+}
 
+void DssaRun::searchPhase(double now) {
+  for (auto& a : agents_)
+    a.setOwn(ships_[a.id()], scenario_.ships[a.id()].goal, now);
+  const DssaExchange::Result x = exchange_.run(agents_, rngs_);
+  bool searched = false;
+  for (const auto& a : agents_)
+    searched = searched || a.neighbourCount() > 0;
+  if (!searched)
+    return;
+  ++res_.search_phases;
+  rounds_total_ += x.rounds;
+  res_.max_rounds = std::max(res_.max_rounds, x.rounds);
+  if (!x.quiescent)
+    ++res_.non_quiescent_phases;
+}
+
+// Each ship moves one step with her intention; arrival ends her move early.
+Moves DssaRun::plannedMoves() const {
+  const std::size_t m = agents_.size();
+  Moves mv{std::vector<Eigen::Vector2d>(m),
+           std::vector<Eigen::Vector2d>(m),
+           std::vector<double>(m, 1.0),
+           std::vector<bool>(m, false),
+           {}};
+  for (std::size_t k = 0; k < m; ++k) {
+    const int i = agents_[k].id();
+    mv.p0[k] = ships_[i].position;
+    mv.v[k] = agents_[k].intention().intendedVelocity();
+    const Eigen::Vector2d goal = scenario_.ships[i].goal;
+    const double len = mv.v[k].norm() * dt_;
+    const double to_goal = (goal - mv.p0[k]).norm();
+    if (len > 0.0) {
+      const Eigen::Vector2d u = mv.v[k] * dt_ / len;
+      const double along = std::min(std::max((goal - mv.p0[k]).dot(u), 0.0), len);
+      if ((mv.p0[k] + u * along - goal).norm() <= options_.goal_tolerance) {
+        mv.arrived[k] = true;
+        mv.frac[k] = along / len;
+      }
+    }
+    if (!mv.arrived[k] && to_goal <= std::max(len, options_.goal_tolerance))
+      mv.docking.push_back(k);
+  }
+  return mv;
+}
+
+// The goal is within this move but off her intended track. With a 45 deg turn per step at full speed
+// the goal can lie inside her turning circle, and she would circle it for ever; so she makes straight
+// for it (Fig. 1's control phase moves a ship directly) when that move keeps her clear of every other
+// ship's intended move over the step, and otherwise keeps her intention.
+void DssaRun::dock(Moves& mv) const {
+  for (std::size_t k : mv.docking) {
+    const Eigen::Vector2d goal = scenario_.ships[agents_[k].id()].goal;
+    const double to_goal = (goal - mv.p0[k]).norm();
+    const double speed = std::max(mv.v[k].norm(), to_goal / dt_);
+    const Eigen::Vector2d vd =
+        to_goal > 0.0 ? Eigen::Vector2d((goal - mv.p0[k]) / to_goal * speed) : Eigen::Vector2d::Zero();
+    const double fd = speed > 0.0 ? to_goal / (speed * dt_) : 0.0;
+    bool clear = true;
+    for (std::size_t j = 0; j < mv.p0.size() && clear; ++j)
+      if (j != k && minDistance(mv.p0[k], vd, mv.p0[j], mv.v[j], std::min(fd, mv.frac[j]) * dt_) < collide_)
+        clear = false;
+    if (clear) {
+      mv.arrived[k] = true;
+      mv.frac[k] = fd;
+      mv.v[k] = vd;
+    }
+  }
+}
+
+void DssaRun::checkSeparation(const Moves& mv) {
+  for (std::size_t a = 0; a < mv.p0.size(); ++a)
+    for (std::size_t b = a + 1; b < mv.p0.size(); ++b) {
+      const double d =
+          minDistance(mv.p0[a], mv.v[a], mv.p0[b], mv.v[b], std::min(mv.frac[a], mv.frac[b]) * dt_);
+      res_.min_separation = std::min(res_.min_separation, d);
+      if (d < collide_)
+        res_.collision = true;
+    }
+}
+
+void DssaRun::applyMoves(const Moves& mv, double now) {
+  for (std::size_t k = 0; k < mv.p0.size(); ++k) {
+    const int i = agents_[k].id();
+    const DssaIntention& in = agents_[k].intention();
+    ShipState& st = ships_[i];
+    const Eigen::Vector2d p1 =
+        mv.arrived[k] ? scenario_.ships[i].goal : Eigen::Vector2d(mv.p0[k] + mv.v[k] * dt_);
+    res_.ships[i].path_length += (p1 - mv.p0[k]).norm();
+    st.position = p1;
+    st.course = in.course;
+    st.heading = in.course;
+    st.speed = in.speed;
+    if (options_.record_trajectories)
+      res_.ships[i].trajectory.push_back(p1);
+    if (mv.arrived[k]) {
+      res_.ships[i].arrived = true;
+      res_.ships[i].travel_time = now + mv.frac[k] * dt_;
+    }
+  }
+}
+
+// Arrived ships leave; the others forget them so that no stale intention lingers.
+void DssaRun::removeArrived(const Moves& mv) {
+  for (std::size_t k = mv.p0.size(); k-- > 0;)
+    if (mv.arrived[k]) {
+      const int id = agents_[k].id();
+      agents_.erase(agents_.begin() + static_cast<std::ptrdiff_t>(k));
+      rngs_.erase(rngs_.begin() + static_cast<std::ptrdiff_t>(k));
+      for (auto& a : agents_)
+        a.forget(id);
+    }
+}
+
+void DssaRun::summarise(int steps) {
+  const std::size_t n = ships_.size();
+  res_.steps = steps;
+  res_.mean_rounds = res_.search_phases > 0 ? static_cast<double>(rounds_total_) / res_.search_phases : 0.0;
+  bool all_arrived = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    DssaShipResult& r = res_.ships[i];
+    all_arrived = all_arrived && r.arrived;
+    r.detour_rate = r.straight > 0.0 ? r.path_length / r.straight : 1.0;
+    res_.total_path_length += r.path_length;
+    res_.mean_travel_time += r.travel_time / n;
+    res_.mean_detour_rate += r.detour_rate / n;
+  }
+  res_.success = all_arrived && !res_.collision;
+}
+
+DssaRunResult DssaRun::run() {
   int step = 0;
-  for (; step < options.max_steps && !agents.empty(); ++step) {
-    const double now = step * dt;
-    for (auto& a : agents)
-      a.setOwn(ships[a.id()].state, scenario.ships[a.id()].goal, now);
-    const DssaExchange::Result x = exchange.run(agents, rngs);
-    bool searched = false;
-    for (const auto& a : agents)
-      searched = searched || a.neighbourCount() > 0;
-    if (searched) {
-      ++res.search_phases;
-      rounds_total += x.rounds;
-      res.max_rounds = std::max(res.max_rounds, x.rounds);
-      if (!x.quiescent)
-        ++res.non_quiescent_phases;
-    }
-
-    // Control phase: each ship moves one step with her intention; arrival ends her move early.
-    const std::size_t m = agents.size();
-    std::vector<Eigen::Vector2d> p0(m), v(m);
-    std::vector<double> frac(m, 1.0);
-    std::vector<bool> arrived(m, false);
-    std::vector<std::size_t> docking;
-    for (std::size_t k = 0; k < m; ++k) {
-      const int i = agents[k].id();
-      const DssaIntention& in = agents[k].intention();
-      p0[k] = ships[i].state.position;
-      v[k] = in.intendedVelocity();
-      const Eigen::Vector2d goal = scenario.ships[i].goal;
-      const double len = v[k].norm() * dt;
-      const double to_goal = (goal - p0[k]).norm();
-      if (len > 0.0) {
-        const Eigen::Vector2d u = v[k] * dt / len;
-        const double along = std::min(std::max((goal - p0[k]).dot(u), 0.0), len);
-        if ((p0[k] + u * along - goal).norm() <= options.goal_tolerance) {
-          arrived[k] = true;
-          frac[k] = along / len;
-        }
-      }
-      if (!arrived[k] && to_goal <= std::max(len, options.goal_tolerance))
-        docking.push_back(k);
-    }
-    // The goal is within this move but off her intended track. With a 45 deg turn per step at full
-    // speed the goal can lie inside her turning circle, and she would circle it for ever; so she makes
-    // straight for it (Fig. 1's control phase moves a ship directly) when that move keeps her clear of
-    // every other ship's intended move over the step, and otherwise keeps her intention.
-    for (std::size_t k : docking) {
-      const Eigen::Vector2d goal = scenario.ships[agents[k].id()].goal;
-      const double to_goal = (goal - p0[k]).norm();
-      const double speed = std::max(v[k].norm(), to_goal / dt);
-      const Eigen::Vector2d vd =
-          to_goal > 0.0 ? Eigen::Vector2d((goal - p0[k]) / to_goal * speed) : Eigen::Vector2d::Zero();
-      const double fd = speed > 0.0 ? to_goal / (speed * dt) : 0.0;
-      bool clear = true;
-      for (std::size_t j = 0; j < m && clear; ++j)
-        if (j != k && minDistance(p0[k], vd, p0[j], v[j], std::min(fd, frac[j]) * dt) < collide)
-          clear = false;
-      if (clear) {
-        arrived[k] = true;
-        frac[k] = fd;
-        v[k] = vd;
-      }
-    }
-    for (std::size_t a = 0; a < m; ++a)
-      for (std::size_t b = a + 1; b < m; ++b) {
-        const double d = minDistance(p0[a], v[a], p0[b], v[b], std::min(frac[a], frac[b]) * dt);
-        res.min_separation = std::min(res.min_separation, d);
-        if (d < collide)
-          res.collision = true;
-      }
-    for (std::size_t k = 0; k < m; ++k) {
-      const int i = agents[k].id();
-      const DssaIntention& in = agents[k].intention();
-      ShipState& st = ships[i].state;
-      const Eigen::Vector2d p1 = arrived[k] ? scenario.ships[i].goal : Eigen::Vector2d(p0[k] + v[k] * dt);
-      res.ships[i].path_length += (p1 - p0[k]).norm();
-      st.position = p1;
-      st.course = in.course;
-      st.heading = in.course;
-      st.speed = in.speed;
-      if (options.record_trajectories)
-        res.ships[i].trajectory.push_back(p1);
-      if (arrived[k]) {
-        res.ships[i].arrived = true;
-        res.ships[i].travel_time = now + frac[k] * dt;
-      }
-    }
-    // Arrived ships leave; the others forget them so that no stale intention lingers.
-    for (std::size_t k = m; k-- > 0;)
-      if (arrived[k]) {
-        const int id = agents[k].id();
-        agents.erase(agents.begin() + static_cast<std::ptrdiff_t>(k));
-        rngs.erase(rngs.begin() + static_cast<std::ptrdiff_t>(k));
-        for (auto& a : agents)
-          a.forget(id);
-      }
-    if (res.collision) {
+  for (; step < options_.max_steps && !agents_.empty(); ++step) {
+    const double now = step * dt_;
+    searchPhase(now);
+    Moves mv = plannedMoves();
+    dock(mv);
+    checkSeparation(mv);
+    applyMoves(mv, now);
+    removeArrived(mv);
+    if (res_.collision) {
       ++step;
       break;
     }
   }
-  res.steps = step;
-  res.mean_rounds = res.search_phases > 0 ? static_cast<double>(rounds_total) / res.search_phases : 0.0;
-  bool all_arrived = true;
-  for (std::size_t i = 0; i < n; ++i) {
-    DssaShipResult& r = res.ships[i];
-    all_arrived = all_arrived && r.arrived;
-    r.detour_rate = r.straight > 0.0 ? r.path_length / r.straight : 1.0;
-    res.total_path_length += r.path_length;
-    res.mean_travel_time += r.travel_time / n;
-    res.mean_detour_rate += r.detour_rate / n;
-  }
-  res.success = all_arrived && !res.collision;
-  return res;
+  summarise(step);
+  return res_;
+}
+
+}  // namespace
+
+DssaRunResult runDssaSimulation(const DssaScenario& scenario, const DssaConfig& config, uint64_t seed,
+                                const DssaSimOptions& options) {
+  return DssaRun(scenario, config, seed, options).run();
 }
 
 DssaExperimentSummary runDssaExperiment(const DssaScenario& scenario, const std::string& variant, int trials,
