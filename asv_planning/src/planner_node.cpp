@@ -53,10 +53,10 @@ const std::set<std::string> kKnownParams = {"planner",
                                             "stand_on_policy",
                                             "risk_clear_time"};
 
-}  // namespace
-
-PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh) {
-  PlannerNodeParams& p = params_;
+// The node's private parameters (config/planner_node.yaml), read strictly and range-checked. The
+// plugin's own subtree is the plugin's to check; ~exchange/ is DssaRosAgent's.
+PlannerNodeParams loadPlannerParams(const ros::NodeHandle& pnh) {
+  PlannerNodeParams p;
   asv_ros::getParam(pnh, "planner", p.planner);
   asv_ros::getParam(pnh, "ship", p.ship);
   asv_ros::getParam(pnh, "frame_id", p.frame_id);
@@ -94,42 +94,39 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
         p.stale_after > 0 && p.limits.max_speed > 0 && p.overrun_factor >= 1 && p.fault_plan_delay >= 0 &&
         p.fault_plan_delay <= 60))
     throw std::invalid_argument("planner_node: a parameter is out of range (see config/planner_node.yaml)");
-
-  // Unknown private keys are typos, except the plugin's own subtree.
-  // The plugin checks its own subtree; ~exchange/ is DssaRosAgent's (it checks its keys).
   asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_planning/config/planner_node.yaml",
                               {p.planner + "/", "exchange/"});
-  asv::ParamMap plugin_params;
-  if (!p.scenario.empty()) {
-    const asv::Scenario sc = asv::loadScenario(p.scenario);
-    obstacles_ = sc.obstacles;
-    const asv::ScenarioShip* ship = sc.own.name == p.ship ? &sc.own : nullptr;
-    for (const auto& t : sc.targets)
-      if (t.name == p.ship)
-        ship = &t;
-    if (!ship)
-      throw std::invalid_argument("ship '" + p.ship + "' is not in scenario " + p.scenario);
-    if (!p.has_goal && ship->goal) {
-      p.goal = *ship->goal;
-      p.has_goal = true;
-    }
-    if (p.cruise_speed <= 0.0)
-      p.cruise_speed = ship->speed;
-    if (p.min_separation <= 0.0)
-      p.min_separation = sc.min_separation;  // the scenario's safety.min_separation_m
-    plugin_params = sc.planner_params.sub(p.planner);
-  }
-  if (p.planner.empty() && !p.scenario.empty()) {
-    // No planner given: the scenario's choice for this ship.
-    const asv::Scenario sc = asv::loadScenario(p.scenario);
-    const asv::ScenarioShip* ship = sc.own.name == p.ship ? &sc.own : nullptr;
-    for (const auto& t : sc.targets)
-      if (t.name == p.ship)
-        ship = &t;
-    if (ship)
-      p.planner = ship->planner;
-    plugin_params = sc.planner_params.sub(p.planner);
-  }
+  return p;
+}
+
+// The plan follower's settings. In lockstep a plan costs no simulated time: the budget only guards
+// against a plugin that never returns, and plugins that stop at their budget give the same plan on
+// any machine.
+asv::PlanFollowerConfig followerConfig(const PlannerNodeParams& p, bool lockstep) {
+  asv::PlanFollowerConfig fc;
+  fc.cruise_speed = p.cruise_speed;
+  fc.replan_period = p.replan_period;
+  fc.min_replan_interval = p.min_replan_interval;
+  fc.time_budget = lockstep ? p.lockstep_time_budget : p.time_budget;
+  fc.waypoint_acceptance = p.waypoint_acceptance;
+  fc.fallback_speed_factor = p.fallback_speed_factor;
+  fc.extremis_range = p.extremis_range;
+  fc.plan_clearance = p.plan_clearance;
+  fc.prediction_horizon = p.prediction_horizon;
+  fc.seed = p.seed;
+  fc.limits = p.limits;
+  fc.min_separation = p.min_separation;
+  fc.stand_on_policy = p.stand_on_policy;
+  fc.risk_clear_time = p.risk_clear_time;
+  return fc;
+}
+
+}  // namespace
+
+PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : nh_(nh), pnh_(pnh), params_(loadPlannerParams(pnh)) {
+  PlannerNodeParams& p = params_;
+  asv::ParamMap plugin_params = applyScenario();
   if (p.planner.empty() || p.planner == "none") {
     ROS_INFO("planner_node: no planner for ship '%s': it steers straight for its goal", p.ship.c_str());
     lockstep_.start();  // nothing to do at any step, but the simulation waits for every participant
@@ -147,36 +144,49 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
     lockstep_.start();  // the distributed agents keep their own timing (agents.launch, not lockstep)
     return;
   }
-
   if (p.cruise_speed > p.limits.max_speed) {
     ROS_WARN("planner_node: cruise speed %.1f m/s above max_speed %.1f m/s: max_speed raised to it",
              p.cruise_speed, p.limits.max_speed);
     p.limits.max_speed = p.cruise_speed;
   }
-  asv::PlanFollowerConfig fc;
-  fc.cruise_speed = p.cruise_speed;
-  fc.replan_period = p.replan_period;
-  fc.min_replan_interval = p.min_replan_interval;
-  // In lockstep a plan costs no simulated time: the budget only guards against a plugin that never
-  // returns, and plugins that stop at their budget give the same plan on any machine.
-  fc.time_budget = lockstep_.enabled() ? p.lockstep_time_budget : p.time_budget;
-  fc.waypoint_acceptance = p.waypoint_acceptance;
-  fc.fallback_speed_factor = p.fallback_speed_factor;
-  fc.extremis_range = p.extremis_range;
-  fc.plan_clearance = p.plan_clearance;
-  fc.prediction_horizon = p.prediction_horizon;
-  fc.seed = p.seed;
-  fc.limits = p.limits;
-  fc.min_separation = p.min_separation;
-  fc.stand_on_policy = p.stand_on_policy;
-  fc.risk_clear_time = p.risk_clear_time;
-  follower_ = std::make_unique<asv::PlanFollower>(fc);  // validates: throws on a bad value
-  follower_config_ = fc;
+  follower_config_ = followerConfig(p, lockstep_.enabled());
+  follower_ = std::make_unique<asv::PlanFollower>(follower_config_);  // validates: throws on a bad value
   if (p.has_goal)
     follower_->setGoal(p.goal);
   follower_->setObstacles(obstacles_);
+  start();
+}
 
-  // The inputs are read at the set-point job (lockstep: the step's odometry, risk and tracks first).
+// The scenario's part, when one is given: the obstacles, this ship's goal, cruise speed and minimum
+// separation where the parameters leave them open, the planner when none is given (the scenario's
+// choice for this ship), and the scenario's parameters of that planner.
+asv::ParamMap PlannerNode::applyScenario() {
+  PlannerNodeParams& p = params_;
+  if (p.scenario.empty())
+    return {};
+  const asv::Scenario sc = asv::loadScenario(p.scenario);
+  obstacles_ = sc.obstacles;
+  const asv::ScenarioShip* ship = sc.own.name == p.ship ? &sc.own : nullptr;
+  for (const auto& t : sc.targets)
+    if (t.name == p.ship)
+      ship = &t;
+  if (!ship)
+    throw std::invalid_argument("ship '" + p.ship + "' is not in scenario " + p.scenario);
+  if (!p.has_goal && ship->goal) {
+    p.goal = *ship->goal;
+    p.has_goal = true;
+  }
+  if (p.cruise_speed <= 0.0)
+    p.cruise_speed = ship->speed;
+  if (p.min_separation <= 0.0)
+    p.min_separation = sc.min_separation;  // the scenario's safety.min_separation_m
+  if (p.planner.empty())
+    p.planner = ship->planner;
+  return sc.planner_params.sub(p.planner);
+}
+
+// The inputs are read at the set-point job (lockstep: the step's odometry, risk and tracks first).
+void PlannerNode::start() {
   odom_sub_ = lockstep_.subscribe("odom", 10, &PlannerNode::odomCallback, this, false);
   risk_sub_ = lockstep_.subscribe("risk", 10, &PlannerNode::riskCallback, this, false);
   targets_sub_ = lockstep_.subscribe("targets", 10, &PlannerNode::targetsCallback, this, false);
@@ -185,12 +195,12 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   path_pub_ = nh_.advertise<nav_msgs::Path>("path", 5, true);
   cmd_pub_ = nh_.advertise<asv_msgs::CourseSpeedSetpoint>("cmd", 5);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("plan_markers", 2, true);
-  lockstep_.every(1.0 / p.setpoint_rate, [this] { timerCallback(); });
+  lockstep_.every(1.0 / params_.setpoint_rate, [this] { timerCallback(); });
   lockstep_.start();
-  updater_.setHardwareID(p.ship);
+  updater_.setHardwareID(params_.ship);
   updater_.add("planner", this, &PlannerNode::diagnose);
-  ROS_INFO("planner_node: ship '%s', planner '%s', goal %s, budget %.2f s", p.ship.c_str(), p.planner.c_str(),
-           p.has_goal ? "set" : "none", p.time_budget);
+  ROS_INFO("planner_node: ship '%s', planner '%s', goal %s, budget %.2f s", params_.ship.c_str(),
+           params_.planner.c_str(), params_.has_goal ? "set" : "none", params_.time_budget);
 }
 
 void PlannerNode::checkClock() {

@@ -65,6 +65,8 @@ private:
   void riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg);
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
   void goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg);
+  asv::ParamMap applyScenario();
+  void start();
   void timerCallback();
   std::vector<asv::PlannerTarget> targetsNow() const;
   void replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets);
