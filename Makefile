@@ -11,12 +11,15 @@ JOBS ?= 2
 # make test also runs the asv_core unit tests under ASan+UBSan (ASAN=0 skips them).
 ASAN ?= 1
 BUILD_TYPE ?= Release
+# WERROR=1 (CI sets it): every compiler warning fails the build. Changing it rebuilds everything.
+WERROR ?= 0
+CXXFLAGS_EXTRA := $(if $(filter 1,$(WERROR)),-Werror,)
 CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES="" \
-          -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+          -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_CXX_FLAGS="$(CXXFLAGS_EXTRA)"
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test bench demo clean format eval eval-ros dssa-results soak test-asan fuzz-long
+.PHONY: help setup build test bench demo clean format lint eval eval-ros dssa-results soak test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
@@ -32,6 +35,7 @@ help:
 	@echo "  make fuzz-long  run each libFuzzer target for FUZZ_RUNS executions (10 M), out/fuzz/summary.txt"
 	@echo "  make setup   install the Debian packages the stack needs (scripts/setup)"
 	@echo "  make format  clang-format every C++ file"
+	@echo "  make lint    clang-tidy (.clang-tidy: bug patterns, performance, functions <= 120 lines)"
 	@echo "  make clean   remove build/, devel/ and out/"
 
 setup:
@@ -85,6 +89,11 @@ clean:
 
 format:
 	@find src asv_* -name '*.cpp' -o -name '*.h' | xargs clang-format -i
+
+# clang-tidy with .clang-tidy over every C++ source of the stack that the build compiles
+# (build/compile_commands.json); fails on any finding. About 15 minutes on 2 cores.
+lint: build
+	@scripts/lint.sh $(JOBS)
 
 # Batch evaluation (scripts/eval.sh, docs/evaluation.md): every scenario with every planner that applies,
 # SEEDS seeds each, through asv_batch; out/eval/results.jsonl, report.md and plots/.

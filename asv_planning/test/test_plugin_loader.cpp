@@ -62,9 +62,10 @@ TEST(PluginLoader, EachPlannerLoadsByShortNameAndAltersToStarboardHeadOn) {
     // DSSA has no COLREGs rule (it minimises collision risk and inefficiency only): it must alter,
     // to either side.
     const bool colregs = std::string(n).rfind("dssa", 0) != 0;
-    if (colregs)
+    if (colregs) {
       EXPECT_TRUE(east > -west || (sp > 0.0 && sp < 180.0))
           << n << " east " << east << " west " << west << " set-point " << sp;
+    }
     EXPECT_GT(std::max(east, -west) + std::fabs(sp), 1.0) << n << " did not alter at all";
   }
 }

@@ -118,7 +118,7 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void AisNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
-    const std::string what = std::to_string(ships_.size()) + " ships and the pending fragments forgotten";
+    std::string what = std::to_string(ships_.size()) + " ships and the pending fragments forgotten";
     ships_.clear();
     decoder_.clearPending();
     return what;

@@ -115,7 +115,7 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void ArpaNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
-    const std::string what = std::to_string(radars_.size()) + " radar targets and the own ship forgotten";
+    std::string what = std::to_string(radars_.size()) + " radar targets and the own ship forgotten";
     radars_.clear();
     has_odom_ = has_osd_heading_ = false;
     return what;

@@ -236,7 +236,7 @@ asv_msgs::Target TrackerNode::toMsg(const asv::TrackEstimate& e) const {
 
 bool TrackerNode::checkClock(const ros::Time& now) {
   return asv_ros::resetOnClockJump(clock_, updater_, now, [this] {
-    const std::string what = std::to_string(tracker_.tracks().size()) + " tracks dropped";
+    std::string what = std::to_string(tracker_.tracks().size()) + " tracks dropped";
     tracker_.clear();
     ais_meta_.clear();
     arpa_meta_.clear();

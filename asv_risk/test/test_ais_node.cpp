@@ -54,7 +54,7 @@ std::vector<std::string> inputLines() {
   lines.push_back("!AIVDM,1,1,,A,15M6");                               // truncated
   lines.push_back("!AIVDM,1,1,,A,15M67FC000G?ufbE`FepT@3n00Sa,0*00");  // bad checksum
   lines.push_back(std::string(5000, 'A'));                             // oversize
-  lines.push_back(std::string("\xff\xfe\x00\x10!!$$\x80", 10));        // binary
+  lines.push_back(std::string("\xff\xfe\x00\x10!!$$\x80\x00", 10));    // binary
 
   ais::PositionReportA a;
   a.status = 0;

@@ -107,7 +107,7 @@ protected:
     for (const auto& st : m->status) {
       if (st.name.find("ais input") == std::string::npos)
         continue;
-      level_ = st.level;
+      level_ = static_cast<unsigned char>(st.level);  // 0 OK .. 3 STALE
       for (const auto& kv : st.values) {
         if (kv.key == "connects")
           connects_ = std::atoi(kv.value.c_str());

@@ -47,7 +47,8 @@ void BM_Sim3dof16(benchmark::State& state) {
     for (int k = 0; k < steps; ++k) {
       if (k % 1000 == 0)  // a new course every 100 s keeps the rudders working
         for (int i = 0; i < kShips; ++i)
-          pilots[i].setCourseSpeed(degToRad(37.0 * (k / 1000 + i)), models[i].params().steady_speed);
+          pilots[i].setCourseSpeed(degToRad(37.0 * static_cast<double>(k / 1000 + i)),
+                                   models[i].params().steady_speed);
       for (int i = 0; i < kShips; ++i)
         models[i].step(pilots[i].update(models[i].state(), kDt), env, kDt);
     }

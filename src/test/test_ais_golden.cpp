@@ -213,7 +213,7 @@ std::string cliPath() {
   if (n > 0) {
     std::string dir(self, static_cast<std::size_t>(n));
     dir = dir.substr(0, dir.rfind('/'));
-    const std::string candidate = dir + "/asv_ais_decode";
+    std::string candidate = dir + "/asv_ais_decode";
     if (::access(candidate.c_str(), X_OK) == 0)
       return candidate;
   }

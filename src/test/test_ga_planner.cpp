@@ -84,6 +84,7 @@ TEST(GaOperators, RouletteWindowingWeights) {
 TEST(GaOperators, RouletteFrequenciesProportionalToFitness) {
   const std::vector<double> w = {1.0, 2.0, 3.0, 4.0, 0.5};
   std::vector<double> cum;
+  cum.reserve(w.size());
   double s = 0.0;
   for (double x : w)
     cum.push_back(s += x);

@@ -97,6 +97,7 @@ std::string table(const DssaScenario& sc, const std::vector<std::string>& varian
                       : sc.name == "sixteen_ships" ? "Table 2: 16 ships crossing each other"
                                                    : "Table 3: three ships overtaking or being overtaken";
   std::vector<DssaExperimentSummary> sum;
+  sum.reserve(variants.size());
   for (const auto& v : variants)
     sum.push_back(runDssaExperiment(sc, v, n, static_cast<uint64_t>(seed)));
   std::ostringstream out;

@@ -440,7 +440,7 @@ SensorFault readSensorFault(const Ctx& c, const YAML::Node& n, const std::string
   else
     c.fail(n["type"], w + ".type", "must be ais_silence, radar_loss or radar_swap");
   auto target = [&](const std::string& key) {
-    const std::string name = c.text(n, key, w + ".");
+    std::string name = c.text(n, key, w + ".");
     for (const auto& t : s.targets)
       if (t.name == name)
         return name;
