@@ -19,12 +19,8 @@ constexpr std::uint32_t kMaxMmsi = 999999999;
 constexpr double kLongRangeSigma = 200.0;
 
 std::set<std::string> knownKeys() {
-  std::set<std::string> k = {"origin_lat_deg",     "origin_scenario", "origin_lon_deg",
-                             "frame_id",           "publish_rate",    "max_range",
-                             "max_targets",        "forget_after",    "position_sigma_high",
-                             "position_sigma_low", "silence_warning", "max_sentence_length",
-                             "fragment_timeout",   "max_pending",     "max_static"};
-  addInputParamKeys(k);
+  std::set<std::string> k = ingestionKeys();
+  k.insert({"position_sigma_high", "position_sigma_low", "fragment_timeout", "max_pending", "max_static"});
   return k;
 }
 
@@ -52,35 +48,15 @@ const char* toString(AisReject r) {
 AisNodeParams loadAisParams(const ros::NodeHandle& pnh) {
   checkUnknownParams(pnh, knownKeys(), "config/ais_node.yaml");
   AisNodeParams p;
-  getOrigin(pnh, p.origin_lat_deg, p.origin_lon_deg);
-  getParam(pnh, "frame_id", p.frame_id);
-  getParam(pnh, "publish_rate", p.publish_rate);
-  getParam(pnh, "max_range", p.max_range);
-  getParam(pnh, "max_targets", p.max_targets, 1);
-  getParam(pnh, "forget_after", p.forget_after);
+  loadIngestionParams(pnh, p);
   getParam(pnh, "position_sigma_high", p.position_sigma_high);
   getParam(pnh, "position_sigma_low", p.position_sigma_low);
-  getParam(pnh, "silence_warning", p.silence_warning);
-  getParam(pnh, "max_sentence_length", p.max_sentence_length, asv::nmea::kStandardMaxLength);
   getParam(pnh, "fragment_timeout", p.decoder.fragment_timeout);
   getParam(pnh, "max_pending", p.decoder.max_pending, 1);
   getParam(pnh, "max_static", p.max_static, 1);
-  NmeaInputParams in;
-  in.frame_id = "ais";
-  p.input = loadInputParams(pnh, in);
   p.decoder.validate();
-  if (p.frame_id.empty())
-    throw std::invalid_argument("frame_id must not be empty");
-  if (!(p.publish_rate > 0.0 && p.publish_rate <= 100.0))
-    throw std::invalid_argument("publish_rate must be in (0, 100] Hz");
-  if (!(p.max_range > 0.0))
-    throw std::invalid_argument("max_range must be > 0 m");
-  if (!(p.forget_after > 0.0))
-    throw std::invalid_argument("forget_after must be > 0 s");
   if (!(p.position_sigma_high > 0.0 && p.position_sigma_low > 0.0))
     throw std::invalid_argument("position_sigma_high and position_sigma_low must be > 0 m");
-  if (!(p.silence_warning > 0.0))
-    throw std::invalid_argument("silence_warning must be > 0 s");
   return p;
 }
 

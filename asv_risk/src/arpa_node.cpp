@@ -15,12 +15,9 @@ namespace asv_risk {
 namespace {
 
 std::set<std::string> knownKeys() {
-  std::set<std::string> k = {
-      "origin_lat_deg",       "origin_scenario",   "origin_lon_deg", "frame_id",        "publish_rate",
-      "odom_timeout",         "max_range",         "max_targets",    "forget_after",    "range_sigma",
-      "range_sigma_fraction", "bearing_sigma_deg", "tll_sigma",      "silence_warning", "max_sentence_length",
-      "max_distance",         "max_speed"};
-  addInputParamKeys(k);
+  std::set<std::string> k = ingestionKeys();
+  k.insert({"odom_timeout", "range_sigma", "range_sigma_fraction", "bearing_sigma_deg", "tll_sigma",
+            "max_distance", "max_speed"});
   return k;
 }
 
@@ -50,35 +47,17 @@ const char* toString(ArpaReject r) {
 ArpaNodeParams loadArpaParams(const ros::NodeHandle& pnh) {
   checkUnknownParams(pnh, knownKeys(), "config/arpa_node.yaml");
   ArpaNodeParams p;
-  getOrigin(pnh, p.origin_lat_deg, p.origin_lon_deg);
-  getParam(pnh, "frame_id", p.frame_id);
-  getParam(pnh, "publish_rate", p.publish_rate);
+  loadIngestionParams(pnh, p);
   getParam(pnh, "odom_timeout", p.odom_timeout);
-  getParam(pnh, "max_range", p.max_range);
-  getParam(pnh, "max_targets", p.max_targets, 1);
-  getParam(pnh, "forget_after", p.forget_after);
   getParam(pnh, "range_sigma", p.range_sigma);
   getParam(pnh, "range_sigma_fraction", p.range_sigma_fraction);
   getParam(pnh, "bearing_sigma_deg", p.bearing_sigma_deg);
   getParam(pnh, "tll_sigma", p.tll_sigma);
-  getParam(pnh, "silence_warning", p.silence_warning);
-  getParam(pnh, "max_sentence_length", p.max_sentence_length, asv::nmea::kStandardMaxLength);
   getParam(pnh, "max_distance", p.arpa.max_distance);
   getParam(pnh, "max_speed", p.arpa.max_speed);
-  NmeaInputParams in;
-  in.frame_id = "radar";
-  in.udp_port = 10111;
-  in.tcp_port = 10111;
-  in.serial_baud = 4800;
-  p.input = loadInputParams(pnh, in);
   p.arpa.validate();
-  if (p.frame_id.empty())
-    throw std::invalid_argument("frame_id must not be empty");
-  if (!(p.publish_rate > 0.0 && p.publish_rate <= 100.0))
-    throw std::invalid_argument("publish_rate must be in (0, 100] Hz");
-  if (!(p.odom_timeout > 0.0) || !(p.max_range > 0.0) || !(p.forget_after > 0.0) ||
-      !(p.silence_warning > 0.0))
-    throw std::invalid_argument("odom_timeout, max_range, forget_after and silence_warning must be > 0");
+  if (!(p.odom_timeout > 0.0))
+    throw std::invalid_argument("odom_timeout must be > 0 s");
   if (!(p.range_sigma > 0.0 && p.range_sigma_fraction >= 0.0 && p.bearing_sigma_deg > 0.0 &&
         p.tll_sigma > 0.0))
     throw std::invalid_argument(

@@ -22,24 +22,22 @@
 #include <ros/ros.h>
 
 #include "asv_risk/nmea_input.h"
+#include "asv_risk/params.h"
 
 namespace asv_risk {
 
-struct AisNodeParams {
-  double origin_lat_deg = 0.0;  // required
-  double origin_lon_deg = 0.0;  // required
-  std::string frame_id = "map";
-  double publish_rate = 10.0;             // [Hz] ais/targets
-  double max_range = 200000.0;            // [m] reports farther from the origin are rejected
-  std::size_t max_targets = 5000;         // ships remembered; the least recently heard is forgotten
-  double forget_after = 900.0;            // [s] a ship not heard for this long is forgotten
-  double position_sigma_high = 10.0;      // [m] 1-sigma of a fix with the accuracy flag set (DGNSS)
-  double position_sigma_low = 30.0;       // [m] 1-sigma of a fix without it (GNSS)
-  double silence_warning = 30.0;          // [s] diagnostics warn when no sentence came for this long
-  std::size_t max_sentence_length = 512;  // [bytes] framer limit (tag block included)
+// ais_node's parameters: the ingestion nodes' shared ones (asv_risk/params.h; AIS defaults: 5000
+// ships, forgotten after 900 s) and the AIS-specific ones.
+struct AisNodeParams : IngestionParams {
+  AisNodeParams() {
+    max_targets = 5000;
+    forget_after = 900.0;
+    input.frame_id = "ais";
+  }
+  double position_sigma_high = 10.0;  // [m] 1-sigma of a fix with the accuracy flag set (DGNSS)
+  double position_sigma_low = 30.0;   // [m] 1-sigma of a fix without it (GNSS)
   asv::ais::DecoderConfig decoder;
   std::size_t max_static = 10000;  // ships whose static data is remembered
-  NmeaInputParams input;
 };
 
 AisNodeParams loadAisParams(const ros::NodeHandle& pnh);

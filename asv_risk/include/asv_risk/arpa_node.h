@@ -28,26 +28,25 @@
 #include <ros/ros.h>
 
 #include "asv_risk/nmea_input.h"
+#include "asv_risk/params.h"
 
 namespace asv_risk {
 
-struct ArpaNodeParams {
-  double origin_lat_deg = 0.0;  // required
-  double origin_lon_deg = 0.0;  // required
-  std::string frame_id = "map";
-  double publish_rate = 10.0;          // [Hz] arpa/targets
+// arpa_node's parameters: the ingestion nodes' shared ones (asv_risk/params.h; radar defaults: 1000
+// targets, forgotten after 120 s, input on port 10111 at 4800 baud) and the radar-specific ones.
+struct ArpaNodeParams : IngestionParams {
+  ArpaNodeParams() {
+    input.frame_id = "radar";
+    input.udp_port = 10111;
+    input.tcp_port = 10111;
+    input.serial_baud = 4800;
+  }
   double odom_timeout = 2.0;           // [s] own position/heading older than this is not used
-  double max_range = 200000.0;         // [m] TLL positions farther from the origin are rejected
-  std::size_t max_targets = 1000;      // radar targets remembered
-  double forget_after = 120.0;         // [s] a radar target not reported for this long is forgotten
   double range_sigma = 30.0;           // [m] smallest 1-sigma of a TTM range
   double range_sigma_fraction = 0.01;  // 1-sigma of a TTM range as a fraction of it (IMO: 1 %)
   double bearing_sigma_deg = 1.0;      // [deg] 1-sigma of a TTM bearing
   double tll_sigma = 50.0;             // [m] 1-sigma of a TLL position
-  double silence_warning = 30.0;       // [s] diagnostics warn when no sentence came for this long
-  std::size_t max_sentence_length = 512;
   asv::arpa::ArpaConfig arpa;
-  NmeaInputParams input;
 };
 
 ArpaNodeParams loadArpaParams(const ros::NodeHandle& pnh);
