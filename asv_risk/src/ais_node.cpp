@@ -14,9 +14,50 @@ namespace asv_risk {
 
 namespace {
 
-constexpr std::uint32_t kMaxMmsi = 999999999;
-// Type 27 positions have 1/10 minute resolution (185 m in latitude).
-constexpr double kLongRangeSigma = 200.0;
+asv::AisTargetConfig targetConfig(const AisNodeParams& p) {
+  asv::AisTargetConfig c;
+  c.max_range = p.max_range;
+  c.max_targets = p.max_targets;
+  c.forget_after = p.forget_after;
+  c.position_sigma_high = p.position_sigma_high;
+  c.position_sigma_low = p.position_sigma_low;
+  return c;
+}
+
+// The message a target is published as (asv_msgs/Target has no has_course/has_speed: an unknown
+// velocity is said by the quality).
+asv_msgs::Target toMsg(const asv::AisTarget& s) {
+  asv_msgs::Target t;
+  t.id = "ais:" + std::to_string(s.mmsi);
+  t.source = asv_msgs::Target::SOURCE_AIS;
+  t.ais_class = s.ais_class == 'B' ? asv_msgs::Target::AIS_CLASS_B : asv_msgs::Target::AIS_CLASS_A;
+  t.mmsi = s.mmsi;
+  t.nav_status = s.nav_status;
+  t.position.x = s.position.x();
+  t.position.y = s.position.y();
+  t.has_geodetic = true;
+  t.latitude = s.lat_deg;
+  t.longitude = s.lon_deg;
+  t.quality = s.velocity == asv::AisVelocity::Reported            ? kQualityFull
+              : s.velocity == asv::AisVelocity::CourseFromHeading ? kQualityCourseFromHeading
+                                                                  : kQualityNoVelocity;
+  if (s.velocity != asv::AisVelocity::Unknown) {
+    t.course_over_ground = asv::wrapTwoPi(s.course);
+    t.speed_over_ground = s.speed;
+    const Eigen::Vector2d v = asv::courseSpeedToVelocity(s.course, s.speed);
+    t.velocity.x = v.x();
+    t.velocity.y = v.y();
+  }
+  t.has_heading = s.has_heading;
+  if (s.has_heading)
+    t.heading = s.heading;
+  t.has_rate_of_turn = s.has_turn;
+  if (s.has_turn)
+    t.rate_of_turn = s.rate_of_turn;
+  t.position_covariance = {s.sigma * s.sigma, 0.0, 0.0, s.sigma * s.sigma};
+  t.stamp = ros::Time().fromNSec(static_cast<std::uint64_t>(s.stamp_ns));
+  return t;
+}
 
 std::set<std::string> knownKeys() {
   std::set<std::string> k = ingestionKeys();
@@ -55,8 +96,7 @@ AisNodeParams loadAisParams(const ros::NodeHandle& pnh) {
   getParam(pnh, "max_pending", p.decoder.max_pending, 1);
   getParam(pnh, "max_static", p.max_static, 1);
   p.decoder.validate();
-  if (!(p.position_sigma_high > 0.0 && p.position_sigma_low > 0.0))
-    throw std::invalid_argument("position_sigma_high and position_sigma_low must be > 0 m");
+  targetConfig(p).validate();  // the position sigmas
   return p;
 }
 
@@ -75,7 +115,8 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
         asv::ais::StaticStoreConfig c;
         c.max_ships = params_.max_static;
         return c;
-      }()) {
+      }()),
+      table_(targetConfig(params_), frame_) {
   targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("ais/targets", 10);
   // Each array holds what was reported since the last: nothing new, nothing to publish.
   lockstep_.every(
@@ -94,8 +135,8 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void AisNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
-    std::string what = std::to_string(ships_.size()) + " ships and the pending fragments forgotten";
-    ships_.clear();
+    std::string what = std::to_string(table_.size()) + " ships and the pending fragments forgotten";
+    table_.clear();
     decoder_.clearPending();
     return what;
   });
@@ -124,107 +165,32 @@ void AisNode::reject(AisReject why, std::uint32_t mmsi) {
 }
 
 void AisNode::handleMessage(const asv::ais::Message& m, const ros::Time& stamp) {
-  namespace ais = asv::ais;
   if (m.own_ship) {  // AIVDO: our own transponder, not a target
     ++own_ship_;
     return;
   }
   const bool had_static = store_.update(m) != nullptr;
-  uint8_t ais_class = 0;
-  double sigma = params_.position_sigma_low;
-  uint8_t nav_status = 15;
-  if (const auto* a = std::get_if<ais::PositionReportA>(&m.body)) {
-    ais_class = asv_msgs::Target::AIS_CLASS_A;
-    sigma = a->accuracy ? params_.position_sigma_high : params_.position_sigma_low;
-    nav_status = a->status;
-  } else if (const auto* b = std::get_if<ais::PositionReportB>(&m.body)) {
-    ais_class = asv_msgs::Target::AIS_CLASS_B;
-    sigma = b->accuracy ? params_.position_sigma_high : params_.position_sigma_low;
-  } else if (const auto* l = std::get_if<ais::LongRangeReport>(&m.body)) {
-    ais_class = asv_msgs::Target::AIS_CLASS_A;
-    sigma = kLongRangeSigma;
-    nav_status = l->status;
-  } else {
-    // Static data only (5, 24), base stations (4), aids to navigation (21): not a ship's position.
-    if (!had_static)
-      ++not_ships_;
-    return;
+  switch (table_.update(m, static_cast<std::int64_t>(stamp.toNSec()))) {
+    case asv::AisOutcome::Target:
+      ++reports_;
+      break;
+    case asv::AisOutcome::OwnShip:
+      ++own_ship_;
+      break;
+    case asv::AisOutcome::NotAShip:  // static data only (5, 24), base stations (4), aids (21)
+      if (!had_static)
+        ++not_ships_;
+      break;
+    case asv::AisOutcome::NoPosition:
+      reject(AisReject::kNoPosition, m.mmsi);
+      break;
+    case asv::AisOutcome::BadMmsi:
+      reject(AisReject::kBadMmsi, m.mmsi);
+      break;
+    case asv::AisOutcome::OutOfRange:
+      reject(AisReject::kOutOfRange, m.mmsi);
+      break;
   }
-  ais::Kinematics k;
-  if (!ais::toKinematics(m, k) || !k.has_position) {
-    reject(AisReject::kNoPosition, m.mmsi);
-    return;
-  }
-  if (m.mmsi == 0 || m.mmsi > kMaxMmsi) {
-    reject(AisReject::kBadMmsi, m.mmsi);
-    return;
-  }
-  const Eigen::Vector2d p = frame_.toLocal(k.lat_deg, k.lon_deg);
-  if (!(p.allFinite() && p.norm() <= params_.max_range)) {
-    reject(AisReject::kOutOfRange, m.mmsi);
-    return;
-  }
-  ++reports_;
-
-  auto it = ships_.find(m.mmsi);
-  if (it == ships_.end()) {
-    if (ships_.size() >= params_.max_targets) {
-      auto oldest = std::min_element(ships_.begin(), ships_.end(), [](const auto& a, const auto& b) {
-        return a.second.target.stamp < b.second.target.stamp;
-      });
-      ships_.erase(oldest);
-      ++evicted_;
-    }
-    it = ships_.emplace(m.mmsi, Ship()).first;
-  }
-  asv_msgs::Target& t = it->second.target;
-  t = asv_msgs::Target();
-  t.id = "ais:" + std::to_string(m.mmsi);
-  t.source = asv_msgs::Target::SOURCE_AIS;
-  t.ais_class = ais_class;
-  t.mmsi = m.mmsi;
-  t.nav_status = nav_status;
-  t.position.x = p.x();
-  t.position.y = p.y();
-  t.has_geodetic = true;
-  t.latitude = k.lat_deg;
-  t.longitude = k.lon_deg;
-  // asv_msgs/Target has no has_course/has_speed: an unknown velocity is said by the quality.
-  t.quality = kQualityFull;
-  double course = 0.0, speed = 0.0;
-  bool velocity = true;
-  if (k.has_speed && k.has_course) {
-    course = k.course;
-    speed = k.speed;
-  } else if (k.has_speed && k.has_heading) {
-    course = k.heading;  // a ship makes good roughly its heading
-    speed = k.speed;
-    t.quality = kQualityCourseFromHeading;
-  } else if (k.has_speed && k.speed == 0.0) {
-    speed = 0.0;  // stopped: the course does not matter
-  } else {
-    velocity = false;
-    t.quality = kQualityNoVelocity;
-  }
-  if (velocity) {
-    t.course_over_ground = asv::wrapTwoPi(course);
-    t.speed_over_ground = speed;
-    const Eigen::Vector2d v = asv::courseSpeedToVelocity(course, speed);
-    t.velocity.x = v.x();
-    t.velocity.y = v.y();
-  }
-  if (k.has_heading) {
-    t.has_heading = true;
-    t.heading = k.heading;
-  }
-  if (k.has_turn) {
-    t.has_rate_of_turn = true;
-    t.rate_of_turn = k.rate_of_turn;
-  }
-  t.position_covariance = {sigma * sigma, 0.0, 0.0, sigma * sigma};
-  t.stamp = stamp;
-  mergeStatic(t);
-  it->second.dirty = true;
 }
 
 void AisNode::mergeStatic(asv_msgs::Target& t) const {
@@ -254,21 +220,12 @@ void AisNode::publish() {
   asv_msgs::TargetArray arr;
   arr.header.stamp = now;
   arr.header.frame_id = params_.frame_id;
-  for (auto it = ships_.begin(); it != ships_.end();) {
-    Ship& s = it->second;
-    const double age = (now - s.target.stamp).toSec();
-    if (age > params_.forget_after) {
-      it = ships_.erase(it);
-      continue;
-    }
-    if (s.dirty) {
-      mergeStatic(s.target);  // static data may have arrived after the position
-      s.target.age = std::max(0.0, age);
-      arr.targets.push_back(s.target);
-      s.dirty = false;
-    }
-    ++it;
-  }
+  table_.due(static_cast<std::int64_t>(now.toNSec()), [&](const asv::AisTarget& s, double age) {
+    asv_msgs::Target t = toMsg(s);
+    mergeStatic(t);  // static data may have arrived after the position
+    t.age = std::max(0.0, age);
+    arr.targets.push_back(std::move(t));
+  });
   if (arr.targets.empty())
     return;
   lockstep_.publish(targets_pub_, arr);
@@ -302,8 +259,8 @@ void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("position reports", reports_);
   stat.add("own ship (VDO) reports ignored", own_ship_);
   stat.add("base stations / aids to navigation ignored", not_ships_);
-  stat.add("targets known", ships_.size());
-  stat.add("targets forgotten (max_targets)", evicted_);
+  stat.add("targets known", table_.size());
+  stat.add("targets forgotten (max_targets)", table_.evicted());
   stat.add("static records", store_.size());
   stat.add("target arrays published", published_);
   input_->diagnose(stat);
@@ -322,7 +279,7 @@ void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "%lu inputs rejected since the last report",
                   static_cast<unsigned long>(rejected - diag_rejected_));
   else
-    stat.summaryf(diagnostic_msgs::DiagnosticStatus::OK, "%zu targets", ships_.size());
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::OK, "%zu targets", table_.size());
   diag_time_ = now;
   diag_sentences_ = framer_.sentences();
   diag_rejected_ = rejected;

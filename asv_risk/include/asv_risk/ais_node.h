@@ -16,6 +16,7 @@
 #include <asv_core/codec/ais.h>
 #include <asv_core/common/clock_jump.h>
 #include <asv_core/common/geodesy.h>
+#include <asv_core/tracking/ais_targets.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -52,14 +53,9 @@ public:
 
   // One line of NMEA (as read from the input); public for tests.
   void handleLine(const std::string& line, const ros::Time& stamp);
-  std::size_t targetCount() const { return ships_.size(); }
+  std::size_t targetCount() const { return table_.size(); }
 
 private:
-  struct Ship {
-    asv_msgs::Target target;
-    bool dirty = false;
-  };
-
   void handleMessage(const asv::ais::Message& m, const ros::Time& stamp);
   void reject(AisReject why, std::uint32_t mmsi);
   void mergeStatic(asv_msgs::Target& t) const;
@@ -75,7 +71,7 @@ private:
   asv::ais::Decoder decoder_;
   asv::ais::Message message_;
   asv::ais::StaticStore store_;
-  std::unordered_map<std::uint32_t, Ship> ships_;
+  asv::AisTargetTable table_;
   ros::Publisher targets_pub_;
   ros::Timer diag_timer_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kIngestion};  // before input_, which subscribes through it
@@ -84,7 +80,7 @@ private:
   std::unique_ptr<NmeaInput> input_;  // last: its thread starts once everything else exists
 
   std::uint64_t rejected_[static_cast<std::size_t>(AisReject::kCount)] = {};
-  std::uint64_t reports_ = 0, own_ship_ = 0, not_ships_ = 0, other_sentences_ = 0, evicted_ = 0;
+  std::uint64_t reports_ = 0, own_ship_ = 0, not_ships_ = 0, other_sentences_ = 0;
   std::uint64_t published_ = 0;
   ros::WallTime last_sentence_;
   // For rates and "since the last report" in diagnostics.

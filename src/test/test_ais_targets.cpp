@@ -1,0 +1,134 @@
+// The AIS target table (asv_core/tracking/ais_targets.h): which messages become targets, the velocity
+// and position uncertainty a report gives, eviction and forgetting. Raw field values are ITU-R M.1371-5
+// units (positions in 1/10000 min, speed in 1/10 kn, course in 1/10 deg), so every expected value is
+// worked out by hand from the standard.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "asv_core/tracking/ais_targets.h"
+
+using namespace asv;
+
+namespace {
+constexpr double kLat = 40.7, kLon = -74.0;  // the map origin, New York Harbor
+constexpr std::int64_t kSec = 1000000000;
+
+ais::Message classA(std::uint32_t mmsi, std::uint32_t speed, std::uint32_t course, std::uint32_t heading,
+                    bool accuracy = false) {
+  ais::PositionReportA a;
+  a.status = 5;                                        // moored
+  a.lat = static_cast<std::int32_t>(kLat * 600000.0);  // 24 420 000
+  a.lon = static_cast<std::int32_t>(kLon * 600000.0);  // -44 400 000
+  a.speed = speed;                                     // 1023: not available
+  a.course = course;                                   // 3600: not available
+  a.heading = heading;                                 // 511: not available
+  a.accuracy = accuracy;
+  a.turn = -128;  // not available
+  ais::Message m;
+  m.type = 1;
+  m.mmsi = mmsi;
+  m.body = a;
+  return m;
+}
+
+AisTargetTable table(std::size_t max_targets = 100) {
+  AisTargetConfig c;
+  c.max_targets = max_targets;
+  c.forget_after = 60.0;
+  return AisTargetTable(c, LocalFrame(kLat, kLon));
+}
+
+std::vector<AisTarget> due(AisTargetTable& t, std::int64_t now_ns) {
+  std::vector<AisTarget> out;
+  t.due(now_ns, [&](const AisTarget& s, double) { out.push_back(s); });
+  return out;
+}
+}  // namespace
+
+TEST(AisTargets, ClassAReportWithCourseAndSpeed) {
+  AisTargetTable t = table();
+  ASSERT_EQ(t.update(classA(366000001, 100, 900, 511, true), 5 * kSec), AisOutcome::Target);
+  const auto d = due(t, 5 * kSec);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].ais_class, 'A');
+  EXPECT_EQ(d[0].nav_status, 5);
+  EXPECT_NEAR(d[0].position.norm(), 0.0, 0.01);  // reported at the origin
+  EXPECT_EQ(d[0].velocity, AisVelocity::Reported);
+  EXPECT_NEAR(d[0].speed, 10.0 * 1852.0 / 3600.0, 1e-9);  // 100 x 0.1 kn
+  EXPECT_NEAR(d[0].course, M_PI / 2, 1e-9);               // 900 x 0.1 deg: due east
+  EXPECT_FALSE(d[0].has_heading);
+  EXPECT_EQ(d[0].sigma, 10.0);  // the accuracy flag: DGNSS
+  EXPECT_TRUE(due(t, 6 * kSec).empty()) << "reported once, published once";
+}
+
+TEST(AisTargets, VelocityFromHeadingStoppedOrUnknown) {
+  AisTargetTable t = table();
+  t.update(classA(1, 50, 3600, 180), 0);    // no course: the heading (180 deg) stands in
+  t.update(classA(2, 0, 3600, 511), 0);     // speed 0, no course: stopped
+  t.update(classA(3, 1023, 3600, 511), 0);  // no speed: unknown
+  for (const auto& s : due(t, 0)) {
+    EXPECT_EQ(s.sigma, 30.0) << "no accuracy flag: GNSS";
+    if (s.mmsi == 1) {
+      EXPECT_EQ(s.velocity, AisVelocity::CourseFromHeading);
+      EXPECT_NEAR(s.course, M_PI, 1e-9);
+      EXPECT_NEAR(s.speed, 5.0 * 1852.0 / 3600.0, 1e-9);
+    } else if (s.mmsi == 2) {
+      EXPECT_EQ(s.velocity, AisVelocity::Reported);
+      EXPECT_EQ(s.speed, 0.0);
+    } else {
+      EXPECT_EQ(s.velocity, AisVelocity::Unknown);
+    }
+  }
+}
+
+TEST(AisTargets, WhatIsNotATargetIsSaidWhy) {
+  AisTargetTable t = table();
+  ais::Message own = classA(366000001, 100, 900, 511);
+  own.own_ship = true;  // AIVDO
+  EXPECT_EQ(t.update(own, 0), AisOutcome::OwnShip);
+  ais::Message voyage;
+  voyage.type = 5;
+  voyage.mmsi = 366000002;
+  voyage.body = ais::StaticVoyageData{};
+  EXPECT_EQ(t.update(voyage, 0), AisOutcome::NotAShip);
+  EXPECT_EQ(t.update(classA(0, 100, 900, 511), 0), AisOutcome::BadMmsi);
+  EXPECT_EQ(t.update(classA(1000000000, 100, 900, 511), 0), AisOutcome::BadMmsi);
+  ais::Message nowhere = classA(366000003, 100, 900, 511);
+  std::get<ais::PositionReportA>(nowhere.body).lat = 91 * 600000;  // 91 deg: "not available"
+  EXPECT_EQ(t.update(nowhere, 0), AisOutcome::NoPosition);
+  ais::Message far = classA(366000004, 100, 900, 511);
+  std::get<ais::PositionReportA>(far.body).lat = static_cast<std::int32_t>(43.0 * 600000.0);  // 255 km north
+  EXPECT_EQ(t.update(far, 0), AisOutcome::OutOfRange);
+  EXPECT_EQ(t.size(), 0u);
+}
+
+TEST(AisTargets, AFullTableEvictsTheLeastRecentlyHeardAndSilentShipsAreForgotten) {
+  AisTargetTable t = table(2);
+  t.update(classA(1, 100, 900, 511), 10 * kSec);
+  t.update(classA(2, 100, 900, 511), 20 * kSec);
+  t.update(classA(1, 100, 900, 511), 30 * kSec);  // ship 1 heard again: ship 2 is now the oldest
+  t.update(classA(3, 100, 900, 511), 40 * kSec);
+  EXPECT_EQ(t.size(), 2u);
+  EXPECT_EQ(t.evicted(), 1u);
+  std::vector<std::uint32_t> left;
+  std::vector<double> ages;
+  t.due(45 * kSec, [&](const AisTarget& s, double age) {
+    left.push_back(s.mmsi);
+    ages.push_back(age);
+  });
+  ASSERT_EQ(left.size(), 2u);
+  EXPECT_NE(left[0], 2u);
+  EXPECT_NE(left[1], 2u);
+  // forget_after 60 s: ship 1 (heard at 30 s) is gone at 91 s, ship 3 (40 s) still there.
+  t.update(classA(3, 100, 900, 511), 40 * kSec);
+  EXPECT_EQ(due(t, 91 * kSec).size(), 1u);
+  EXPECT_EQ(t.size(), 1u);
+}
+
+TEST(AisTargets, SpanSecondsRoundsAsRosDurations) {
+  EXPECT_EQ(spanSeconds(1500000000), 1.5);
+  EXPECT_EQ(spanSeconds(-1500000000), -2.0 + 0.5);  // sec -2, nsec 500 000 000
+  EXPECT_NEAR(spanSeconds(-1), -1e-9, 1e-16);  // sec -1, nsec 999 999 999: rounded as -1 + 0.999999999
+}
