@@ -5,6 +5,7 @@
 #include <set>
 
 #include <asv_core/common/units.h>
+#include <asv_core/tracking/radar_fix.h>
 #include <asv_ros/conversions.h>
 
 #include "asv_risk/params.h"
@@ -215,9 +216,10 @@ void ArpaNode::handleTtm(const asv::nmea::Sentence& s, const ros::Time& stamp) {
     reject(ArpaReject::kNoOwnPosition, tt.number);
     return;
   }
-  const Eigen::Vector2d u(std::sin(tt.bearing), std::cos(tt.bearing));  // along the bearing, ENU
-  const Eigen::Vector2d w(u.y(), -u.x());                               // across it
-  const Eigen::Vector2d p = own_position_ + tt.distance * u;
+  const asv::RadarFix fix =
+      asv::radarFix(own_position_, tt.distance, tt.bearing,
+                    {params_.range_sigma, params_.range_sigma_fraction, params_.bearing_sigma_deg});
+  const Eigen::Vector2d& p = fix.position;
   Radar& r = *radar(tt.number, stamp);
   asv_msgs::Target& t = r.target;
   t.position.x = p.x();
@@ -232,9 +234,7 @@ void ArpaNode::handleTtm(const asv::nmea::Sentence& s, const ros::Time& stamp) {
   setVelocity(r, tt);
   if (!tt.name.empty())
     t.name = tt.name;
-  const double sr = std::max(params_.range_sigma, params_.range_sigma_fraction * tt.distance);
-  const double sc = tt.distance * asv::degToRad(params_.bearing_sigma_deg);
-  const Eigen::Matrix2d cov = sr * sr * u * u.transpose() + sc * sc * w * w.transpose();
+  const Eigen::Matrix2d& cov = fix.covariance;
   t.position_covariance = {cov(0, 0), cov(0, 1), cov(1, 0), cov(1, 1)};
   t.quality = !r.has_velocity                                ? kQualityNoVelocity
               : tt.status == asv::arpa::TargetStatus::kQuery ? kQualityAcquiring
