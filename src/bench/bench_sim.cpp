@@ -45,10 +45,10 @@ void BM_Sim3dof16(benchmark::State& state) {
       pilots[i].reset();
     }
     for (int k = 0; k < steps; ++k) {
-      if (k % 1000 == 0)  // a new course every 100 s keeps the rudders working
+      const int leg = k / 1000;  // a new course every 1000 steps (100 s) keeps the rudders working
+      if (k % 1000 == 0)
         for (int i = 0; i < kShips; ++i)
-          pilots[i].setCourseSpeed(degToRad(37.0 * static_cast<double>(k / 1000 + i)),
-                                   models[i].params().steady_speed);
+          pilots[i].setCourseSpeed(degToRad(37.0 * (leg + i)), models[i].params().steady_speed);
       for (int i = 0; i < kShips; ++i)
         models[i].step(pilots[i].update(models[i].state(), kDt), env, kDt);
     }
