@@ -5,7 +5,9 @@
    result JSON byte for byte (apart from its wall-clock fields, wall_time_s and plan_time_ms), and the
    same messages, byte for byte, on every pipeline topic between the nodes (ingestion, tracks, risk,
    set-points).
-2. A sample of scenario/planner pairs through the ROS pipeline and through asv_batch land in the same
+2. Recording (record:=true) works into an output folder nothing has made yet, and the bag holds the
+   pipeline's topics.
+3. A sample of scenario/planner pairs through the ROS pipeline and through asv_batch land in the same
    class (collision / separation kept / arrived) with minimum separations within the tolerance of
    scripts/eval_ros.py (which make eval-ros runs on every pair).
 
@@ -99,6 +101,23 @@ class Lockstep(unittest.TestCase):
         r = json.loads(a)
         self.assertFalse(r["collision"], a)  # and the crossing is a real test: the own ship gives way
         self.assertTrue(r["manoeuvres"], a)
+
+    def test_recording_into_a_folder_that_does_not_exist_yet(self):
+        # As on a fresh checkout: nothing has made the output folder when rosbag record starts.
+        out = os.path.join(tempfile.mkdtemp(prefix="asv_record_"), "not", "yet")
+        proc = subprocess.run(
+            ["roslaunch", "asv_bringup", "scenario.launch", "scenario:=head_on", "planner:=mopso", "lockstep:=true",
+             "record:=true", "max_sim_time:=120", "out:=" + out, "output:=log"],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=600)
+        log = proc.stdout.decode(errors="replace")
+        bag_path = os.path.join(out, "run.bag")
+        self.assertTrue(os.path.exists(bag_path), "no bag recorded:\n" + log[-3000:])
+        import rosbag  # only this test needs it
+        with rosbag.Bag(bag_path) as bag:
+            topics = bag.get_type_and_topic_info().topics
+            for t in ("/sim/nmea", "/own/odom", "/targets", "/risk", "/own/plan", "/own/cmd", "/clock"):
+                self.assertIn(t, topics, "topic %s not recorded" % t)
+                self.assertGreater(topics[t].message_count, 0, "no message on " + t)
 
     def test_batch_and_ros_agree_on_a_sample(self):
         script = os.path.join(rospkg.RosPack().get_path("asv_bringup"), "..", "scripts", "eval_ros.py")
