@@ -6,7 +6,7 @@
    same messages, byte for byte, on every pipeline topic between the nodes (ingestion, tracks, risk,
    set-points).
 2. Recording (record:=true) works into an output folder nothing has made yet, and the bag holds the
-   pipeline's topics.
+   pipeline's topics; the output folder is named after the scenario file actually run.
 3. A sample of scenario/planner pairs through the ROS pipeline and through asv_batch land in the same
    class (collision / separation kept / arrived) with minimum separations within the tolerance of
    scripts/eval_ros.py (which make eval-ros runs on every pair).
@@ -118,6 +118,16 @@ class Lockstep(unittest.TestCase):
             for t in ("/sim/nmea", "/own/odom", "/targets", "/risk", "/own/plan", "/own/cmd", "/clock"):
                 self.assertIn(t, topics, "topic %s not recorded" % t)
                 self.assertGreater(topics[t].message_count, 0, "no message on " + t)
+
+    def test_output_folder_is_named_after_the_scenario_file(self):
+        cwd = tempfile.mkdtemp(prefix="asv_out_")
+        path = os.path.join(rospkg.RosPack().get_path("asv_bringup"), "test", "sensor_faults.yaml")
+        proc = subprocess.run(
+            ["roslaunch", "asv_bringup", "scenario.launch", "scenario_file:=" + path, "planner:=ga",
+             "lockstep:=true", "max_sim_time:=30", "output:=log"],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=600, cwd=cwd, env=dict(os.environ, PWD=cwd))
+        result = os.path.join(cwd, "out", "sensor_faults", "ga", "result.json")
+        self.assertTrue(os.path.exists(result), proc.stdout.decode(errors="replace")[-3000:])
 
     def test_batch_and_ros_agree_on_a_sample(self):
         script = os.path.join(rospkg.RosPack().get_path("asv_bringup"), "..", "scripts", "eval_ros.py")
