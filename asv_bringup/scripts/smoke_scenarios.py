@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Launch-file smoke test: every scenario of asv_bringup/scenarios starts through scenario.launch,
 runs SMOKE_SIM_TIME simulated seconds as fast as it can, shuts down cleanly and leaves a result JSON
-with the keys of ARCHITECTURE.md section 6.
+with the keys of docs/evaluation.md.
 
 Run by rostest (test/smoke.test), which provides the master; each scenario is one test case.
 Environment: ASV_SMOKE_SIM_TIME (default 20 s), ASV_SMOKE_ONLY (comma-separated scenario names).

@@ -1,7 +1,7 @@
 // asv_batch: runs a scenario faster than real time in one process, with the same core components as
 // the ROS pipeline (Simulation, RiskAssessor, the planner plugins loaded through pluginlib by short
 // name, planner_node's replanning policy through asv::PlanFollower, the evaluator's RunRecorder), and
-// writes one run result per line (ARCHITECTURE.md section 6). No ROS master is needed; pluginlib finds
+// writes one run result per line (docs/evaluation.md). No ROS master is needed; pluginlib finds
 // the plugins through ROS_PACKAGE_PATH (source devel/setup.bash).
 //
 // Targets are the simulator's ground truth (no NMEA round trip, no tracker): the batch measures the

@@ -1,5 +1,5 @@
 // asv_batch end to end: runs the built binary on a small crossing scenario and checks the JSON it
-// writes (ARCHITECTURE.md section 6), the exit codes of bad input, and determinism across two runs.
+// writes (docs/evaluation.md), the exit codes of bad input, and determinism across two runs.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>

@@ -277,7 +277,7 @@ TEST(Evaluation, JsonIsDeterministicWithFixedKeysAndNullForUnknowns) {
   EXPECT_NE(ja.find("\"manoeuvres\": [{\"t_s\": 10.0, \"course_change_deg\": 60.0}]"), std::string::npos);
   EXPECT_NE(ja.find("\"plan_time_ms\": {\"median\": 2.000, \"max\": 2.000, \"count\": 1}"),
             std::string::npos);
-  // Key order of the whole object (ARCHITECTURE.md section 6).
+  // Key order of the whole object (docs/evaluation.md).
   size_t pos = 0;
   for (const char* key : {"scenario", "planner", "seed", "collision", "min_separation_m", "safety_violation",
                           "arrived", "time_to_goal_s", "path_length_m", "path_ratio", "manoeuvres", "targets",

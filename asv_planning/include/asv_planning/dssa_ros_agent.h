@@ -1,6 +1,6 @@
 // DssaRosAgent: distributed DSSA / DSSA+ (Hirayama et al. 2019, Fig. 1 and Fig. 2) for one ship over ROS.
 //
-// Every ship that runs DSSA runs its own planner_node with one of these (ARCHITECTURE.md section 2); the
+// Every ship that runs DSSA runs its own planner_node with one of these (README.md, Distributed DSSA); the
 // ships exchange intentions on the shared topic /intentions (asv_msgs/Intention), as they would over AIS.
 // The search itself is asv::DssaAgent, the same code the in-process asv::DssaExchange runs; this class
 // only moves its intentions over ROS and keeps the round protocol:

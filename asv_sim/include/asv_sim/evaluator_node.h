@@ -1,5 +1,5 @@
 // evaluator_node: the run evaluator over ROS topics, a thin wrapper over asv::RunRecorder (the same
-// code asv_batch uses), writing the run result of ARCHITECTURE.md section 6.
+// code asv_batch uses), writing the run result of docs/evaluation.md.
 //
 // Subscribes: sim/ships (asv_msgs/TargetArray: ground truth; the own ship is the entry whose id is
 //   ~own_ship), sim/events (asv_msgs/SimEvent: END ends the run), <own>/plan (asv_msgs/Plan: compute

@@ -5,7 +5,7 @@
 // as `asv_ais_decode -u` must reproduce gpsd's unscaled output and because "not available" must stay
 // distinguishable from a value. SI accessors return std::nullopt for the "not available" sentinels
 // (lat 91, lon 181, speed 1023, course 3600, heading 511, turn -128) and for out-of-range values;
-// they never turn a sentinel into a number (ARCHITECTURE.md section 4).
+// they never turn a sentinel into a number (README.md, Conventions).
 //
 // No allocation on the decode path: text fields are fixed-capacity strings, fragments are stored in
 // buffers reserved when the Decoder is built.

@@ -1,5 +1,5 @@
 // Geodetic <-> local ENU conversion through GeographicLib::LocalCartesian (WGS84), around a scenario
-// origin. Never a hand-made flat-earth formula (ARCHITECTURE.md section 4).
+// origin. Never a hand-made flat-earth formula (README.md, Conventions).
 #pragma once
 
 #include <memory>

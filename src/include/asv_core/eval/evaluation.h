@@ -1,5 +1,5 @@
-// Run evaluation: the metrics and the COLREGs score of one run, and its JSON (ARCHITECTURE.md
-// section 6). asv_batch (in-process) and evaluator_node (over ROS topics) feed the same RunRecorder,
+// Run evaluation: the metrics and the COLREGs score of one run, and its JSON (docs/evaluation.md).
+// asv_batch (in-process) and evaluator_node (over ROS topics) feed the same RunRecorder,
 // so both write the same result for the same trajectories.
 //
 // The COLREGs score follows the structure of Woerner, Benjamin, Novitzky & Leonard (2019),

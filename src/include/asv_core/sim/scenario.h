@@ -1,4 +1,4 @@
-// Scenario files, format 1 (ARCHITECTURE.md section 5): one YAML scenario per file. Unknown keys,
+// Scenario files, format 1 (asv_bringup/scenarios/README.md): one YAML scenario per file. Unknown keys,
 // missing fields, ambiguous position forms, unit mistakes and ships that start overlapping are errors
 // naming the file, line and key.
 #pragma once
@@ -77,7 +77,7 @@ struct Scenario {
   std::vector<const ScenarioShip*> planningShips() const;
 };
 
-// Short planner names (ARCHITECTURE.md section 5).
+// Short planner names (asv_bringup/scenarios/README.md).
 const std::vector<std::string>& knownPlanners();
 
 // Parses a scenario; `source` names the file in error messages. Throws ScenarioError.

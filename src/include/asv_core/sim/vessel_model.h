@@ -1,7 +1,7 @@
 // Vessel models for the simulator: Lazarowska's (2015) kinematic own-ship model and the 3-DOF MMG-type
 // manoeuvring model of Wu et al. (2022), integrated with a fixed-step fourth-order Runge-Kutta.
 //
-// Frames and signs (ARCHITECTURE.md section 4): position in local ENU metres (x east, y north); heading
+// Frames and signs (README.md, Conventions): position in local ENU metres (x east, y north); heading
 // psi nautical (clockwise from true north, rad); body axes x forward, y to starboard, z down, so sway v
 // is positive to starboard and yaw rate r positive clockwise (a turn to starboard). A positive rudder
 // angle is starboard helm: it turns the ship to starboard (r > 0), as in the MMG standard method.
