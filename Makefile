@@ -91,7 +91,7 @@ format:
 	@find src asv_* -name '*.cpp' -o -name '*.h' | xargs clang-format -i
 
 # clang-tidy with .clang-tidy over every C++ source of the stack that the build compiles
-# (build/compile_commands.json); fails on any finding. About 15 minutes on 2 cores.
+# (build/compile_commands.json); fails on any finding. About 4 minutes on 2 cores.
 lint: build
 	@scripts/lint.sh $(JOBS)
 
