@@ -51,16 +51,12 @@ bool DssaRosAgent::wanted(const std::string& planner, const ros::NodeHandle& pnh
 }
 
 asv::DssaConfig DssaRosAgent::configOf(const PlannerPlugin& plugin) {
-  // The loaded plugin's parameters (its sea-scale defaults and the node's keys): the agents plan
-  // exactly as the plugin would. The preset is the plugin's name unless a key sets it, as in
-  // asv::DssaPlanner::configure.
+  // The loaded plugin's parameters (its sea-scale defaults and the node's keys), read as the plugin's
+  // DssaPlanner reads them: the agents plan exactly as the plugin would.
   const std::string name = plugin.name();
   if (name != "dssa" && name != "dssa_plus")
     throw std::invalid_argument("distributed DSSA needs the dssa or dssa_plus plugin, not '" + name + "'");
-  asv::ParamMap params = plugin.parameters();
-  if (!params.has("preset"))
-    params.set("preset", name);
-  return asv::DssaConfig::fromParams(params);
+  return asv::DssaConfig::fromParams(plugin.parameters(), name);
 }
 
 int DssaRosAgent::shipId(const std::string& name) {

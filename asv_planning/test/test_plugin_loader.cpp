@@ -100,9 +100,7 @@ TEST(PluginLoader, ParametersInForceAreTheDefaultsWithTheGivenKeysOver) {
   EXPECT_EQ(p.getDouble("time_step", 0.0), 5.0);      // given
   EXPECT_EQ(p.getDouble("time_window", 0.0), 600.0);  // the sea-scale default (10 minutes)
   EXPECT_FALSE(p.has("preset"));                      // the plugin's name stands for it
-  asv::ParamMap with_preset = p;
-  with_preset.set("preset", plugin->name());
-  const asv::DssaConfig c = asv::DssaConfig::fromParams(with_preset);
+  const asv::DssaConfig c = asv::DssaConfig::fromParams(p, plugin->name());
   EXPECT_EQ(c.time_step, 5.0);
   EXPECT_TRUE(c.speed_changes);  // DSSA+ changes speed as well as course (Hirayama et al. 2019, Sec. 4)
   EXPECT_EQ(c.alpha, c.beta);    // the plugin's dssa_plus is the s=c variant, alpha = beta

@@ -96,7 +96,6 @@ AisNodeParams loadAisParams(const ros::NodeHandle& pnh) {
   getParam(pnh, "max_pending", p.decoder.max_pending, 1);
   getParam(pnh, "max_static", p.max_static, 1);
   p.decoder.validate();
-  targetConfig(p).validate();  // the position sigmas
   return p;
 }
 

@@ -68,7 +68,9 @@ TEST(AisTargets, VelocityFromHeadingStoppedOrUnknown) {
   t.update(classA(1, 50, 3600, 180), 0);    // no course: the heading (180 deg) stands in
   t.update(classA(2, 0, 3600, 511), 0);     // speed 0, no course: stopped
   t.update(classA(3, 1023, 3600, 511), 0);  // no speed: unknown
-  for (const auto& s : due(t, 0)) {
+  const auto d = due(t, 0);
+  ASSERT_EQ(d.size(), 3u);
+  for (const auto& s : d) {
     EXPECT_EQ(s.sigma, 30.0) << "no accuracy flag: GNSS";
     if (s.mmsi == 1) {
       EXPECT_EQ(s.velocity, AisVelocity::CourseFromHeading);
@@ -130,5 +132,5 @@ TEST(AisTargets, AFullTableEvictsTheLeastRecentlyHeardAndSilentShipsAreForgotten
 TEST(AisTargets, SpanSecondsRoundsAsRosDurations) {
   EXPECT_EQ(spanSeconds(1500000000), 1.5);
   EXPECT_EQ(spanSeconds(-1500000000), -2.0 + 0.5);  // sec -2, nsec 500 000 000
-  EXPECT_NEAR(spanSeconds(-1), -1e-9, 1e-16);  // sec -1, nsec 999 999 999: rounded as -1 + 0.999999999
+  EXPECT_NEAR(spanSeconds(-1), -1e-9, 1e-16);       // sec -1, nsec 999 999 999: rounded as -1 + 0.999999999
 }

@@ -437,10 +437,13 @@ DssaExchange::Result DssaExchange::run(std::vector<DssaAgent>& agents,
 DssaPlanner::DssaPlanner(const std::string& preset) : preset_(preset), config_(DssaConfig::preset(preset)) {}
 
 void DssaPlanner::configure(const ParamMap& params) {
-  ParamMap copy = params;
-  if (!copy.has("preset"))
-    copy.set("preset", preset_);
-  config_ = DssaConfig::fromParams(copy);
+  config_ = DssaConfig::fromParams(params, preset_);
+}
+
+DssaConfig DssaConfig::fromParams(ParamMap params, const std::string& preset) {
+  if (!params.has("preset"))
+    params.set("preset", preset);
+  return fromParams(params);
 }
 
 Plan DssaPlanner::plan(const PlanningProblem& problem) {

@@ -95,6 +95,9 @@ struct DssaConfig {
   // course_change_step_deg, speed_change_max, speed_change_step, max_rounds, max_search_time,
   // ref_speed, max_speed_over_ref. Unknown keys are rejected; the result is validated.
   static DssaConfig fromParams(const ParamMap& params);
+  // fromParams with `preset` as the preset unless the parameters name one: how a planner named
+  // "dssa" or "dssa_plus" reads its parameters (DssaPlanner, and the ROS agents from the plugin's).
+  static DssaConfig fromParams(ParamMap params, const std::string& preset);
   // The sea-scale defaults every ROS and batch run starts from (the paper's values are in its own
   // units: an 800 x 800 area, TimeWindow 20, detection range 500): a 10-minute window, intentions
   // exchanged within 6 nm, "collide" below 0.5 nm, a 10 s search step, speed changes of up to 4 m/s
