@@ -51,6 +51,8 @@ class ParamErrors(unittest.TestCase):
                             "_stale_after:=later")
         self.expect_refused("'/pe_plan/replan_period' has the wrong type", "asv_planning", "planner_node",
                             "pe_plan", "_replan_period:=soon")
+        self.expect_refused("'/pe_arpa/max_targets' has the wrong type", "asv_risk", "arpa_node", "pe_arpa",
+                            "_origin_lat_deg:=54.6", "_origin_lon_deg:=18.8", "_max_targets:=many")
 
     def test_unknown_key_is_a_typo(self):
         self.expect_refused("unknown parameter '/pe_sim3/rat'", "asv_sim", "sim_node", "pe_sim3", "_rat:=30")
@@ -58,6 +60,14 @@ class ParamErrors(unittest.TestCase):
                             "_own_ship:=own", "_prety:=true")
         self.expect_refused("unknown parameter '/pe_track/forget_afte'", "asv_risk", "tracker", "pe_track",
                             "_forget_afte:=5")
+        # A typo of a required key is named as a typo, not as the missing key.
+        self.expect_refused("unknown parameter '/pe_ais/origin_lat_dg'", "asv_risk", "ais_node", "pe_ais",
+                            "_origin_lat_dg:=54.6", "_origin_lon_deg:=18.8")
+        # The input's subtree is checked too.
+        self.expect_refused("unknown parameter '/pe_ais2/input/typ'", "asv_risk", "ais_node", "pe_ais2",
+                            "_origin_lat_deg:=54.6", "_origin_lon_deg:=18.8", "_input/typ:=udp")
+        self.expect_refused("unknown parameter '/pe_plan2/replan_perod'", "asv_planning", "planner_node",
+                            "pe_plan2", "_planner:=none", "_replan_perod:=5")
 
     def test_missing_scenario_is_named_on_screen_and_on_rosout(self):
         fatal = []

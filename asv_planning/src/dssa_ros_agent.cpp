@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <set>
 #include <stdexcept>
 
 #include <asv_core/common/units.h>
@@ -18,35 +17,29 @@
 
 namespace asv_planning {
 
-namespace {
-
-const std::set<std::string> kExchangeKeys = {"topic",          "round_timeout",      "forget_after",
-                                             "arrival_radius", "drop_outgoing_from", "drop_outgoing_until"};
-
-}  // namespace
-
-DssaExchangeParams DssaExchangeParams::load(const ros::NodeHandle& pnh) {
+DssaExchangeParams DssaExchangeParams::fromParams(const asv::ParamMap& ex) {
   DssaExchangeParams p;
-  const ros::NodeHandle exchange(pnh, "exchange");
-  asv_ros::checkUnknownParams(exchange, kExchangeKeys, "asv_planning/config/dssa.yaml");
-  asv_ros::getParam(exchange, "topic", p.topic);
-  asv_ros::getParam(exchange, "round_timeout", p.round_timeout);
-  asv_ros::getParam(exchange, "forget_after", p.forget_after);
-  asv_ros::getParam(exchange, "arrival_radius", p.arrival_radius);
-  asv_ros::getParam(exchange, "drop_outgoing_from", p.drop_outgoing_from);
-  asv_ros::getParam(exchange, "drop_outgoing_until", p.drop_outgoing_until);
-  if (p.topic.empty() || !(p.round_timeout > 0.0) || !(p.forget_after > 0.0) || !(p.arrival_radius >= 0.0) ||
-      !std::isfinite(p.drop_outgoing_from) || !std::isfinite(p.drop_outgoing_until))
-    throw std::invalid_argument(
-        "~exchange/: a parameter is out of range (see asv_planning/config/dssa.yaml)");
+  p.topic = ex.getString("topic", p.topic);
+  p.round_timeout = ex.getDouble("round_timeout", p.round_timeout);
+  p.forget_after = ex.getDouble("forget_after", p.forget_after);
+  p.arrival_radius = ex.getDouble("arrival_radius", p.arrival_radius);
+  p.drop_outgoing_from = ex.getDouble("drop_outgoing_from", p.drop_outgoing_from);
+  p.drop_outgoing_until = ex.getDouble("drop_outgoing_until", p.drop_outgoing_until);
+  if (p.topic.empty())
+    throw std::invalid_argument("~exchange/topic must not be empty");
+  if (!(p.round_timeout > 0.0) || !(p.forget_after > 0.0) || !(p.arrival_radius >= 0.0))
+    throw std::invalid_argument("~exchange/: round_timeout and forget_after must be > 0, arrival_radius >= 0");
   return p;
 }
 
-bool DssaRosAgent::wanted(const std::string& planner, const ros::NodeHandle& pnh) {
+DssaExchangeParams DssaExchangeParams::load(const ros::NodeHandle& pnh) {
+  return asv_ros::loadConfig<DssaExchangeParams>(ros::NodeHandle(pnh, "exchange"),
+                                                 "asv_planning/config/dssa.yaml");
+}
+
+bool DssaRosAgent::wanted(const std::string& planner, bool distributed) {
   // Off by default: an agent sees only ships that exchange intentions, so against ordinary traffic
   // (AIS/radar targets) the single-ship plugin is the safe choice. agents.launch turns it on.
-  bool distributed = false;
-  asv_ros::getParam(pnh, "distributed", distributed);
   return distributed && (planner == "dssa" || planner == "dssa_plus");
 }
 

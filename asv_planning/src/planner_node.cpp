@@ -1,5 +1,4 @@
 #include "asv_planning/planner_node.h"
-#include "asv_planning/param_tree.h"
 
 #include "asv_planning/odometry.h"
 
@@ -17,137 +16,67 @@
 #include <nav_msgs/Path.h>
 #include <tf2/utils.h>
 #include <visualization_msgs/MarkerArray.h>
-#include <xmlrpcpp/XmlRpcValue.h>
 
 namespace asv_planning {
 
 namespace {
 
-const std::set<std::string> kKnownParams = {"planner",
-                                            "ship",
-                                            "frame_id",
-                                            "scenario",
-                                            "goal_x",
-                                            "goal_y",
-                                            "cruise_speed",
-                                            "replan_period",
-                                            "min_replan_interval",
-                                            "time_budget",
-                                            "lockstep_time_budget",
-                                            "overrun_factor",
-                                            "fault_plan_delay",
-                                            "setpoint_rate",
-                                            "waypoint_acceptance",
-                                            "fallback_speed_factor",
-                                            "extremis_range",
-                                            "plan_clearance",
-                                            "prediction_horizon",
-                                            "stale_after",
-                                            "seed",
-                                            "max_speed",
-                                            "min_speed",
-                                            "turn_rate",
-                                            "turn_delay",
-                                            "distributed",
-                                            "min_separation",
-                                            "stand_on_policy",
-                                            "risk_clear_time"};
+constexpr const char* kYaml = "asv_planning/config/planner_node.yaml";
 
-// The node's private parameters (config/planner_node.yaml), read strictly and range-checked. The
-// plugin's own subtree is the plugin's to check; ~exchange/ is DssaRosAgent's.
-PlannerNodeParams loadPlannerParams(const ros::NodeHandle& pnh) {
-  PlannerNodeParams p;
-  asv_ros::getParam(pnh, "planner", p.planner);
-  asv_ros::getParam(pnh, "ship", p.ship);
-  asv_ros::getParam(pnh, "frame_id", p.frame_id);
-  asv_ros::getParam(pnh, "scenario", p.scenario);
-  asv_ros::getParam(pnh, "cruise_speed", p.cruise_speed);
-  asv_ros::getParam(pnh, "replan_period", p.replan_period);
-  asv_ros::getParam(pnh, "min_replan_interval", p.min_replan_interval);
-  asv_ros::getParam(pnh, "time_budget", p.time_budget);
-  asv_ros::getParam(pnh, "lockstep_time_budget", p.lockstep_time_budget);
-  asv_ros::getParam(pnh, "overrun_factor", p.overrun_factor);
-  asv_ros::getParam(pnh, "fault_plan_delay", p.fault_plan_delay);
-  asv_ros::getParam(pnh, "setpoint_rate", p.setpoint_rate);
-  asv_ros::getParam(pnh, "waypoint_acceptance", p.waypoint_acceptance);
-  asv_ros::getParam(pnh, "fallback_speed_factor", p.fallback_speed_factor);
-  asv_ros::getParam(pnh, "extremis_range", p.extremis_range);
-  asv_ros::getParam(pnh, "stale_after", p.stale_after);
-  asv_ros::getParam(pnh, "plan_clearance", p.plan_clearance);
-  asv_ros::getParam(pnh, "prediction_horizon", p.prediction_horizon);
-  asv_ros::getParam(pnh, "seed", p.seed);
-  asv_ros::getParam(pnh, "max_speed", p.limits.max_speed);
-  asv_ros::getParam(pnh, "min_speed", p.limits.min_speed);
-  asv_ros::getParam(pnh, "turn_rate", p.limits.turn_rate);
-  asv_ros::getParam(pnh, "turn_delay", p.limits.turn_delay);
-  asv_ros::getParam(pnh, "min_separation", p.min_separation);
-  asv_ros::getParam(pnh, "stand_on_policy", p.stand_on_policy);
-  asv_ros::getParam(pnh, "risk_clear_time", p.risk_clear_time);
-  if (pnh.hasParam("goal_x") || pnh.hasParam("goal_y")) {
-    if (!pnh.getParam("goal_x", p.goal.x()) || !pnh.getParam("goal_y", p.goal.y()))
-      throw std::invalid_argument("give both goal_x and goal_y (metres, map frame)");
-    p.has_goal = true;
+// PlannerNodeConfig::fromParams, naming a typo first when it fails with every key read.
+asv::PlannerNodeConfig plannerConfig(const asv::ParamMap& params) {
+  try {
+    return asv::PlannerNodeConfig::fromParams(params);
+  } catch (const std::invalid_argument&) {
+    asv_ros::rejectTypoBehindError(params, kYaml, {params.getString("planner", "") + "/", "exchange/"});
+    throw;
   }
-  if (!(p.replan_period > 0 && p.min_replan_interval >= 0 && p.time_budget > 0 &&
-        p.lockstep_time_budget > 0 && p.setpoint_rate > 0 && p.waypoint_acceptance > 0 &&
-        p.fallback_speed_factor >= 0 && p.fallback_speed_factor <= 1 && p.extremis_range >= 0 &&
-        p.stale_after > 0 && p.limits.max_speed > 0 && p.overrun_factor >= 1 && p.fault_plan_delay >= 0 &&
-        p.fault_plan_delay <= 60))
-    throw std::invalid_argument("planner_node: a parameter is out of range (see config/planner_node.yaml)");
-  asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_planning/config/planner_node.yaml",
-                              {p.planner + "/", "exchange/"});
-  return p;
 }
 
 // The plan follower's settings. In lockstep a plan costs no simulated time: the budget only guards
 // against a plugin that never returns, and plugins that stop at their budget give the same plan on
 // any machine.
-asv::PlanFollowerConfig followerConfig(const PlannerNodeParams& p, bool lockstep) {
-  asv::PlanFollowerConfig fc;
-  fc.cruise_speed = p.cruise_speed;
-  fc.replan_period = p.replan_period;
-  fc.min_replan_interval = p.min_replan_interval;
-  fc.time_budget = lockstep ? p.lockstep_time_budget : p.time_budget;
-  fc.waypoint_acceptance = p.waypoint_acceptance;
-  fc.fallback_speed_factor = p.fallback_speed_factor;
-  fc.extremis_range = p.extremis_range;
-  fc.plan_clearance = p.plan_clearance;
-  fc.prediction_horizon = p.prediction_horizon;
-  fc.seed = p.seed;
-  fc.limits = p.limits;
-  fc.min_separation = p.min_separation;
-  fc.stand_on_policy = p.stand_on_policy;
-  fc.risk_clear_time = p.risk_clear_time;
+asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool lockstep) {
+  asv::PlanFollowerConfig fc = p.follower;
+  if (lockstep)
+    fc.time_budget = p.lockstep_time_budget;
   return fc;
 }
 
 }  // namespace
 
 PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : nh_(nh), pnh_(pnh), params_(loadPlannerParams(pnh)) {
-  PlannerNodeParams& p = params_;
+    : PlannerNode(nh, pnh, asv_ros::readParams(pnh)) {}
+
+// The node's private parameters (config/planner_node.yaml) and the plugin's: the plugin's own subtree
+// ~<planner>/ over the scenario's planner_params (the plugin checks its keys); ~exchange/ is
+// DssaRosAgent's.
+PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::ParamMap& params)
+    : nh_(nh), pnh_(pnh), params_(plannerConfig(params)) {
+  asv::PlannerNodeConfig& p = params_;
   asv::ParamMap plugin_params = applyScenario();
+  asv_ros::rejectUnknown(params, kYaml, {p.planner + "/", "exchange/"});
   if (p.planner.empty() || p.planner == "none") {
     ROS_INFO("planner_node: no planner for ship '%s': it steers straight for its goal", p.ship.c_str());
     lockstep_.start();  // nothing to do at any step, but the simulation waits for every participant
     return;
   }
-  XmlRpc::XmlRpcValue tree;
-  if (pnh.getParam(p.planner, tree))
-    flattenParams(tree, "", plugin_params, pnh.resolveName(p.planner) + "/");
+  plugin_params.merge(params.sub(p.planner));
   plugin_ = loader_.load(p.planner, plugin_params);
-  if (DssaRosAgent::wanted(p.planner, pnh)) {  // distributed DSSA: the agent drives cmd, not the plugin
-    dssa_ =
-        std::make_unique<DssaRosAgent>(nh_, pnh_, DssaRosAgent::configOf(*plugin_),
-                                       DssaRosOptions{p.ship, p.frame_id, p.has_goal, p.goal, p.cruise_speed,
-                                                      p.limits.min_speed, p.limits.max_speed, p.seed});
+  if (DssaRosAgent::wanted(p.planner, p.distributed)) {  // distributed DSSA: the agent drives cmd
+    const asv::PlanFollowerConfig& f = p.follower;
+    dssa_ = std::make_unique<DssaRosAgent>(
+        nh_, pnh_, DssaRosAgent::configOf(*plugin_),
+        DssaRosOptions{p.ship, p.frame_id, p.has_goal, p.goal, f.cruise_speed, f.limits.min_speed,
+                       f.limits.max_speed, f.seed});
     lockstep_.start();  // the distributed agents keep their own timing (agents.launch, not lockstep)
     return;
   }
-  if (p.cruise_speed > p.limits.max_speed) {
+  asv::OwnShipLimits& limits = p.follower.limits;
+  if (p.follower.cruise_speed > limits.max_speed) {
     ROS_WARN("planner_node: cruise speed %.1f m/s above max_speed %.1f m/s: max_speed raised to it",
-             p.cruise_speed, p.limits.max_speed);
-    p.limits.max_speed = p.cruise_speed;
+             p.follower.cruise_speed, limits.max_speed);
+    limits.max_speed = p.follower.cruise_speed;
   }
   follower_config_ = followerConfig(p, lockstep_.enabled());
   follower_ = std::make_unique<asv::PlanFollower>(follower_config_);  // validates: throws on a bad value
@@ -161,7 +90,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 // separation where the parameters leave them open, the planner when none is given (the scenario's
 // choice for this ship), and the scenario's parameters of that planner.
 asv::ParamMap PlannerNode::applyScenario() {
-  PlannerNodeParams& p = params_;
+  asv::PlannerNodeConfig& p = params_;
   if (p.scenario.empty())
     return {};
   const asv::Scenario sc = asv::loadScenario(p.scenario);
@@ -176,10 +105,10 @@ asv::ParamMap PlannerNode::applyScenario() {
     p.goal = *ship->goal;
     p.has_goal = true;
   }
-  if (p.cruise_speed <= 0.0)
-    p.cruise_speed = ship->speed;
-  if (p.min_separation <= 0.0)
-    p.min_separation = sc.min_separation;  // the scenario's safety.min_separation_m
+  if (p.follower.cruise_speed <= 0.0)
+    p.follower.cruise_speed = ship->speed;
+  if (p.follower.min_separation <= 0.0)
+    p.follower.min_separation = sc.min_separation;  // the scenario's safety.min_separation_m
   if (p.planner.empty())
     p.planner = ship->planner;
   return sc.planner_params.sub(p.planner);
@@ -200,7 +129,7 @@ void PlannerNode::start() {
   updater_.setHardwareID(params_.ship);
   updater_.add("planner", this, &PlannerNode::diagnose);
   ROS_INFO("planner_node: ship '%s', planner '%s', goal %s, budget %.2f s", params_.ship.c_str(),
-           params_.planner.c_str(), params_.has_goal ? "set" : "none", params_.time_budget);
+           params_.planner.c_str(), params_.has_goal ? "set" : "none", follower_config_.time_budget);
 }
 
 void PlannerNode::checkClock() {
@@ -251,9 +180,7 @@ void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) 
 std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
   // The tracked targets with their risk picture; stale messages give nothing (the plan is then made
   // on what the ship knows: no targets).
-  std::vector<asv::PlannerTarget> out;
   const ros::Time now = ros::Time::now();
-  std::map<std::string, const asv_msgs::TargetRisk*> risk_by_id;
   // A message stamped far in the future is as unusable as an old one. Not any stamp ahead of our clock:
   // faster than real time, /clock reaches the nodes milliseconds apart, which is seconds of simulated
   // time at 150x (a real jump back is handled by checkClock()).
@@ -261,31 +188,13 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
     const double age = (now - stamp).toSec();
     return age < params_.stale_after && age > -params_.stale_after;
   };
-  if (risk_ && fresh(risk_->header.stamp))
-    for (const auto& r : risk_->targets)
-      risk_by_id[r.target_id] = &r;
   if (!targets_ || !fresh(targets_->header.stamp))
-    return out;
-  // A target no assessment covers yet (a new track, or the start of a run) is left out; only once the
-  // risk picture has gone silent is every target planned against, risk-blind (asv::riskBlindPlanning).
-  const bool risk_alive = !asv::riskBlindPlanning(risk_ && fresh(risk_->header.stamp), now.toSec(),
-                                                  first_input_, params_.stale_after);
-  for (const auto& t : targets_->targets) {
-    if (t.id == params_.ship ||
-        !asv::allFinite({t.position.x, t.position.y, t.course_over_ground, t.speed_over_ground}))
-      continue;
-    asv::PlannerTarget pt;
-    pt.state.id = t.id;
-    pt.state.position = {t.position.x, t.position.y};
-    pt.state.course = t.course_over_ground;
-    pt.state.speed = t.speed_over_ground;
-    pt.state.heading = t.has_heading ? t.heading : t.course_over_ground;
-    pt.state.length = t.length;
-    auto it = risk_by_id.find(t.id);
-    if (risk_alive && it == risk_by_id.end())
-      continue;
-    if (it != risk_by_id.end()) {
-      const asv_msgs::TargetRisk& r = *it->second;
+    return {};
+  const bool risk_fresh = risk_ && fresh(risk_->header.stamp);
+  std::map<std::string, asv::PlannerTarget> assessed;
+  if (risk_fresh)
+    for (const auto& r : risk_->targets) {
+      asv::PlannerTarget& pt = assessed[r.target_id];
       pt.risk = static_cast<asv::RiskLevel>(r.risk_level);
       pt.compliant = r.compliant;
       pt.encounter = static_cast<asv::Encounter>(r.encounter);
@@ -294,9 +203,20 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
       pt.tcpa = r.tcpa;
       pt.dcpa = r.dcpa;
     }
-    out.push_back(pt);
+  std::vector<asv::ShipState> tracks;
+  for (const auto& t : targets_->targets) {
+    asv::ShipState s;
+    s.id = t.id;
+    s.position = {t.position.x, t.position.y};
+    s.course = t.course_over_ground;
+    s.speed = t.speed_over_ground;
+    s.heading = t.has_heading ? t.heading : t.course_over_ground;
+    s.length = t.length;
+    tracks.push_back(s);
   }
-  return out;
+  const bool risk_alive =
+      !asv::riskBlindPlanning(risk_fresh, now.toSec(), first_input_, params_.stale_after);
+  return asv::selectPlannerTargets(params_.ship, tracks, assessed, risk_alive);
 }
 
 void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets) {
@@ -315,13 +235,13 @@ void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerT
     ros::WallDuration(params_.fault_plan_delay).sleep();  // fault injection: a plugin that overruns
   last_compute_ = (ros::WallTime::now() - start).toSec();
   max_compute_ = std::max(max_compute_, last_compute_);
-  if (!lockstep_.enabled() && last_compute_ > params_.overrun_factor * params_.time_budget) {
+  if (!lockstep_.enabled() && last_compute_ > params_.overrun_factor * params_.follower.time_budget) {
     // Made for a picture now overrun_factor budgets old: not flown. The fallback keeps the ship safe
     // until the next plan comes in time (diagnostics WARN with this reason).
     ++overruns_;
     char why_late[160];
     std::snprintf(why_late, sizeof why_late, "plugin overran its time budget: %.3f s > %.1f x %.3f s",
-                  last_compute_, params_.overrun_factor, params_.time_budget);
+                  last_compute_, params_.overrun_factor, params_.follower.time_budget);
     ROS_WARN_THROTTLE(5.0, "planner_node: '%s' %s; fallback in force", params_.planner.c_str(), why_late);
     plan = follower_->fallback(targets, why_late);
   }

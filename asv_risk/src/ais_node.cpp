@@ -14,16 +14,6 @@ namespace asv_risk {
 
 namespace {
 
-asv::AisTargetConfig targetConfig(const AisNodeParams& p) {
-  asv::AisTargetConfig c;
-  c.max_range = p.max_range;
-  c.max_targets = p.max_targets;
-  c.forget_after = p.forget_after;
-  c.position_sigma_high = p.position_sigma_high;
-  c.position_sigma_low = p.position_sigma_low;
-  return c;
-}
-
 // The message a target is published as (asv_msgs/Target has no has_course/has_speed: an unknown
 // velocity is said by the quality).
 asv_msgs::Target toMsg(const asv::AisTarget& s) {
@@ -59,11 +49,6 @@ asv_msgs::Target toMsg(const asv::AisTarget& s) {
   return t;
 }
 
-std::set<std::string> knownKeys() {
-  std::set<std::string> k = ingestionKeys();
-  k.insert({"position_sigma_high", "position_sigma_low", "fragment_timeout", "max_pending", "max_static"});
-  return k;
-}
 
 std::string trimmed(std::string_view s) {
   while (!s.empty() && (s.back() == ' ' || s.back() == '@'))
@@ -87,16 +72,9 @@ const char* toString(AisReject r) {
 }
 
 AisNodeParams loadAisParams(const ros::NodeHandle& pnh) {
-  checkUnknownParams(pnh, knownKeys(), "config/ais_node.yaml");
-  AisNodeParams p;
-  loadIngestionParams(pnh, p);
-  getParam(pnh, "position_sigma_high", p.position_sigma_high);
-  getParam(pnh, "position_sigma_low", p.position_sigma_low);
-  getParam(pnh, "fragment_timeout", p.decoder.fragment_timeout);
-  getParam(pnh, "max_pending", p.decoder.max_pending, 1);
-  getParam(pnh, "max_static", p.max_static, 1);
-  p.decoder.validate();
-  return p;
+  NmeaInputParams input;
+  input.frame_id = "ais";
+  return loadIngestionParams<asv::AisNodeConfig>(pnh, input, "config/ais_node.yaml");
 }
 
 AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
@@ -115,7 +93,7 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
         c.max_ships = params_.max_static;
         return c;
       }()),
-      table_(targetConfig(params_), frame_) {
+      table_(params_.targets, frame_) {
   targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("ais/targets", 10);
   // Each array holds what was reported since the last: nothing new, nothing to publish.
   lockstep_.every(

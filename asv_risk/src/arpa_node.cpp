@@ -5,7 +5,6 @@
 #include <set>
 
 #include <asv_core/common/units.h>
-#include <asv_core/tracking/radar_fix.h>
 #include <asv_ros/conversions.h>
 
 #include "asv_risk/params.h"
@@ -15,14 +14,62 @@ namespace asv_risk {
 
 namespace {
 
-std::set<std::string> knownKeys() {
-  std::set<std::string> k = ingestionKeys();
-  k.insert({"odom_timeout", "range_sigma", "range_sigma_fraction", "bearing_sigma_deg", "tll_sigma",
-            "max_distance", "max_speed"});
-  return k;
+std::int64_t nanoseconds(const ros::Time& t) {
+  return static_cast<std::int64_t>(t.toNSec());
 }
 
-constexpr int kMaxTargetNumber = 65535;  // Target.arpa_number is a uint16
+ArpaReject toReject(asv::ArpaOutcome o) {
+  switch (o) {
+    case asv::ArpaOutcome::NoNumber:
+      return ArpaReject::kNoNumber;
+    case asv::ArpaOutcome::NoPosition:
+      return ArpaReject::kNoPosition;
+    case asv::ArpaOutcome::NoOwnPosition:
+      return ArpaReject::kNoOwnPosition;
+    case asv::ArpaOutcome::NoOwnHeading:
+      return ArpaReject::kNoOwnHeading;
+    case asv::ArpaOutcome::OutOfRange:
+      return ArpaReject::kOutOfRange;
+    default:
+      return ArpaReject::kNone;
+  }
+}
+
+std::uint8_t toQuality(asv::ArpaQuality q) {
+  switch (q) {
+    case asv::ArpaQuality::Tracking:
+      return kQualityArpa;
+    case asv::ArpaQuality::Acquiring:
+      return kQualityAcquiring;
+    default:
+      return kQualityNoVelocity;
+  }
+}
+
+// The message a target is published as.
+asv_msgs::Target toMsg(const asv::ArpaTarget& r, double age) {
+  asv_msgs::Target t;
+  t.id = "arpa:" + std::to_string(r.number);
+  t.source = asv_msgs::Target::SOURCE_ARPA;
+  t.arpa_number = static_cast<uint16_t>(r.number);
+  t.nav_status = 15;  // not defined: a radar does not know it
+  t.name = r.name;
+  t.position.x = r.position.x();
+  t.position.y = r.position.y();
+  t.has_geodetic = r.has_geodetic;
+  t.latitude = r.lat_deg;
+  t.longitude = r.lon_deg;
+  t.course_over_ground = r.course;
+  t.speed_over_ground = r.speed;
+  t.velocity.x = r.velocity.x();
+  t.velocity.y = r.velocity.y();
+  const Eigen::Matrix2d& c = r.covariance;
+  t.position_covariance = {c(0, 0), c(0, 1), c(1, 0), c(1, 1)};
+  t.quality = toQuality(r.quality());
+  t.stamp.fromNSec(static_cast<std::uint64_t>(r.stamp_ns));
+  t.age = std::max(0.0, age);
+  return t;
+}
 
 }  // namespace
 
@@ -46,24 +93,12 @@ const char* toString(ArpaReject r) {
 }
 
 ArpaNodeParams loadArpaParams(const ros::NodeHandle& pnh) {
-  checkUnknownParams(pnh, knownKeys(), "config/arpa_node.yaml");
-  ArpaNodeParams p;
-  loadIngestionParams(pnh, p);
-  getParam(pnh, "odom_timeout", p.odom_timeout);
-  getParam(pnh, "range_sigma", p.range_sigma);
-  getParam(pnh, "range_sigma_fraction", p.range_sigma_fraction);
-  getParam(pnh, "bearing_sigma_deg", p.bearing_sigma_deg);
-  getParam(pnh, "tll_sigma", p.tll_sigma);
-  getParam(pnh, "max_distance", p.arpa.max_distance);
-  getParam(pnh, "max_speed", p.arpa.max_speed);
-  p.arpa.validate();
-  if (!(p.odom_timeout > 0.0))
-    throw std::invalid_argument("odom_timeout must be > 0 s");
-  if (!(p.range_sigma > 0.0 && p.range_sigma_fraction >= 0.0 && p.bearing_sigma_deg > 0.0 &&
-        p.tll_sigma > 0.0))
-    throw std::invalid_argument(
-        "range_sigma, bearing_sigma_deg, tll_sigma must be > 0, range_sigma_fraction >= 0");
-  return p;
+  NmeaInputParams input;
+  input.frame_id = "radar";
+  input.udp_port = 10111;
+  input.tcp_port = 10111;
+  input.serial_baud = 4800;
+  return loadIngestionParams<asv::ArpaNodeConfig>(pnh, input, "config/arpa_node.yaml");
 }
 
 ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
@@ -75,7 +110,8 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
         asv::nmea::FramerConfig c;
         c.max_length = params_.max_sentence_length;
         return c;
-      }()) {
+      }()),
+      table_(params_.targets, frame_) {
   targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("arpa/targets", 10);
   odom_sub_ = lockstep_.subscribe("odom", 20, &ArpaNode::odomCallback, this, false);
   // Each array holds what was reported since the last: nothing new, nothing to publish.
@@ -95,9 +131,8 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void ArpaNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
-    std::string what = std::to_string(radars_.size()) + " radar targets and the own ship forgotten";
-    radars_.clear();
-    has_odom_ = has_osd_heading_ = false;
+    std::string what = std::to_string(table_.size()) + " radar targets and the own ship forgotten";
+    table_.clear();
     return what;
   });
 }
@@ -133,59 +168,6 @@ void ArpaNode::parseError(asv::arpa::Error e, const char* type) {
                     asv::arpa::errorText(e));
 }
 
-ArpaNode::Radar* ArpaNode::radar(int number, const ros::Time& stamp) {
-  auto it = radars_.find(number);
-  if (it != radars_.end())
-    return &it->second;
-  if (radars_.size() >= params_.max_targets) {
-    auto oldest = std::min_element(radars_.begin(), radars_.end(), [](const auto& a, const auto& b) {
-      return a.second.target.stamp < b.second.target.stamp;
-    });
-    radars_.erase(oldest);
-  }
-  Radar& r = radars_[number];
-  r.target.id = "arpa:" + std::to_string(number);
-  r.target.source = asv_msgs::Target::SOURCE_ARPA;
-  r.target.arpa_number = static_cast<uint16_t>(number);
-  r.target.nav_status = 15;
-  r.target.stamp = stamp;
-  return &r;
-}
-
-bool ArpaNode::ownHeading(const ros::Time& stamp, double& heading) const {
-  if (has_odom_ && std::abs((stamp - odom_stamp_).toSec()) <= params_.odom_timeout) {
-    heading = own_heading_;
-    return true;
-  }
-  if (has_osd_heading_ && std::abs((stamp - osd_stamp_).toSec()) <= params_.odom_timeout) {
-    heading = osd_heading_;
-    return true;
-  }
-  return false;
-}
-
-void ArpaNode::setVelocity(Radar& r, const asv::arpa::TrackedTarget& tt) {
-  asv_msgs::Target& t = r.target;
-  double course = 0.0, speed = 0.0;
-  if (tt.has_speed && tt.has_course) {
-    course = tt.course;
-    speed = tt.speed;
-  } else if (tt.has_speed && tt.speed == 0.0) {
-    speed = 0.0;
-  } else {
-    r.has_velocity = false;
-    t.course_over_ground = t.speed_over_ground = 0.0;
-    t.velocity.x = t.velocity.y = 0.0;
-    return;
-  }
-  r.has_velocity = true;
-  t.course_over_ground = asv::wrapTwoPi(course);
-  t.speed_over_ground = speed;
-  const Eigen::Vector2d v = asv::courseSpeedToVelocity(course, speed);
-  t.velocity.x = v.x();
-  t.velocity.y = v.y();
-}
-
 void ArpaNode::handleTtm(const asv::nmea::Sentence& s, const ros::Time& stamp) {
   ++ttm_;
   asv::arpa::TrackedTarget tt;
@@ -194,53 +176,9 @@ void ArpaNode::handleTtm(const asv::nmea::Sentence& s, const ros::Time& stamp) {
     parseError(e, "TTM");
     return;
   }
-  if (tt.number < 0 || tt.number > kMaxTargetNumber) {
-    reject(ArpaReject::kNoNumber, tt.number);
-    return;
-  }
-  if (tt.status == asv::arpa::TargetStatus::kLost) {
-    lost_ += radars_.erase(tt.number);
-    return;
-  }
-  double heading = asv::arpa::kNaN;
-  ownHeading(stamp, heading);
-  if (!asv::arpa::toTrue(tt, heading)) {
-    reject(ArpaReject::kNoOwnHeading, tt.number);
-    return;
-  }
-  if (!tt.has_distance || !tt.has_bearing) {
-    reject(ArpaReject::kNoPosition, tt.number);
-    return;
-  }
-  if (!has_odom_ || std::abs((stamp - odom_stamp_).toSec()) > params_.odom_timeout) {
-    reject(ArpaReject::kNoOwnPosition, tt.number);
-    return;
-  }
-  const asv::RadarFix fix =
-      asv::radarFix(own_position_, tt.distance, tt.bearing,
-                    {params_.range_sigma, params_.range_sigma_fraction, params_.bearing_sigma_deg});
-  const Eigen::Vector2d& p = fix.position;
-  Radar& r = *radar(tt.number, stamp);
-  asv_msgs::Target& t = r.target;
-  t.position.x = p.x();
-  t.position.y = p.y();
-  t.has_geodetic = false;
-  const asv::GeoPoint g = frame_.toGeodetic(p);
-  if (std::isfinite(g.lat_deg) && std::isfinite(g.lon_deg)) {
-    t.has_geodetic = true;
-    t.latitude = g.lat_deg;
-    t.longitude = g.lon_deg;
-  }
-  setVelocity(r, tt);
-  if (!tt.name.empty())
-    t.name = tt.name;
-  const Eigen::Matrix2d& cov = fix.covariance;
-  t.position_covariance = {cov(0, 0), cov(0, 1), cov(1, 0), cov(1, 1)};
-  t.quality = !r.has_velocity                                ? kQualityNoVelocity
-              : tt.status == asv::arpa::TargetStatus::kQuery ? kQualityAcquiring
-                                                             : kQualityArpa;
-  t.stamp = stamp;
-  r.dirty = true;
+  const ArpaReject r = toReject(table_.ttm(tt, nanoseconds(stamp)));
+  if (r != ArpaReject::kNone)
+    reject(r, tt.number);
 }
 
 void ArpaNode::handleTll(const asv::nmea::Sentence& s, const ros::Time& stamp) {
@@ -251,40 +189,9 @@ void ArpaNode::handleTll(const asv::nmea::Sentence& s, const ros::Time& stamp) {
     parseError(e, "TLL");
     return;
   }
-  if (tp.number < 0 || tp.number > kMaxTargetNumber) {
-    reject(ArpaReject::kNoNumber, tp.number);
-    return;
-  }
-  if (tp.status == asv::arpa::TargetStatus::kLost) {
-    lost_ += radars_.erase(tp.number);
-    return;
-  }
-  if (!tp.has_position || !asv::validLatLon(tp.lat_deg, tp.lon_deg)) {
-    reject(ArpaReject::kNoPosition, tp.number);
-    return;
-  }
-  const Eigen::Vector2d p = frame_.toLocal(tp.lat_deg, tp.lon_deg);
-  if (!(p.allFinite() && p.norm() <= params_.max_range)) {
-    reject(ArpaReject::kOutOfRange, tp.number);
-    return;
-  }
-  Radar& r = *radar(tp.number, stamp);
-  asv_msgs::Target& t = r.target;
-  t.position.x = p.x();
-  t.position.y = p.y();
-  t.has_geodetic = true;
-  t.latitude = tp.lat_deg;
-  t.longitude = tp.lon_deg;
-  if (!tp.name.empty())
-    t.name = tp.name;
-  const double v = params_.tll_sigma * params_.tll_sigma;
-  t.position_covariance = {v, 0.0, 0.0, v};
-  if (!r.has_velocity)
-    t.quality = kQualityNoVelocity;
-  else if (t.quality == 0)
-    t.quality = kQualityArpa;
-  t.stamp = stamp;
-  r.dirty = true;
+  const ArpaReject r = toReject(table_.tll(tp, nanoseconds(stamp)));
+  if (r != ArpaReject::kNone)
+    reject(r, tp.number);
 }
 
 void ArpaNode::handleOsd(const asv::nmea::Sentence& s, const ros::Time& stamp) {
@@ -295,11 +202,8 @@ void ArpaNode::handleOsd(const asv::nmea::Sentence& s, const ros::Time& stamp) {
     parseError(e, "OSD");
     return;
   }
-  if (o.has_heading && o.heading_valid) {
-    has_osd_heading_ = true;
-    osd_heading_ = o.heading;
-    osd_stamp_ = stamp;
-  }
+  if (o.has_heading && o.heading_valid)
+    table_.osdHeading(o.heading, nanoseconds(stamp));
 }
 
 void ArpaNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
@@ -315,10 +219,8 @@ void ArpaNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
     return;
   }
   const double yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
-  has_odom_ = true;
-  own_position_ = {x.x, x.y};
-  own_heading_ = asv::yawToCourse(yaw);
-  odom_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  table_.ownShip({x.x, x.y}, asv::yawToCourse(yaw), nanoseconds(stamp));
 }
 
 void ArpaNode::publish() {
@@ -327,20 +229,7 @@ void ArpaNode::publish() {
   asv_msgs::TargetArray arr;
   arr.header.stamp = now;
   arr.header.frame_id = params_.frame_id;
-  for (auto it = radars_.begin(); it != radars_.end();) {
-    Radar& r = it->second;
-    const double age = (now - r.target.stamp).toSec();
-    if (age > params_.forget_after) {
-      it = radars_.erase(it);
-      continue;
-    }
-    if (r.dirty) {
-      r.target.age = std::max(0.0, age);
-      arr.targets.push_back(r.target);
-      r.dirty = false;
-    }
-    ++it;
-  }
+  table_.due(nanoseconds(now), [&](const asv::ArpaTarget& t, double age) { arr.targets.push_back(toMsg(t, age)); });
   if (arr.targets.empty())
     return;
   lockstep_.publish(targets_pub_, arr);
@@ -366,9 +255,10 @@ void ArpaNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("TLL", tll_);
   stat.add("OSD", osd_);
   stat.add("other sentences", other_);
-  stat.add("targets lost (status L)", lost_);
-  stat.add("targets known", radars_.size());
-  stat.add("own position known", has_odom_);
+  stat.add("targets lost (status L)", table_.lost());
+  stat.add("targets forgotten (table full)", table_.evicted());
+  stat.add("targets known", table_.size());
+  stat.add("own position known", table_.hasOwnShip());
   stat.add("target arrays published", published_);
   stat.add("clock jumps back (state reset)", clock_.jumps());
   input_->diagnose(stat);
@@ -386,10 +276,10 @@ void ArpaNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   else if (rejected > diag_rejected_)
     stat.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "%lu inputs rejected since the last report",
                   static_cast<unsigned long>(rejected - diag_rejected_));
-  else if (!has_odom_)
+  else if (!table_.hasOwnShip())
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no own-ship odometry: TTM cannot be placed");
   else
-    stat.summaryf(diagnostic_msgs::DiagnosticStatus::OK, "%zu radar targets", radars_.size());
+    stat.summaryf(diagnostic_msgs::DiagnosticStatus::OK, "%zu radar targets", table_.size());
   diag_time_ = now;
   diag_sentences_ = framer_.sentences();
   diag_rejected_ = rejected;

@@ -15,7 +15,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "asv_risk/params.h"
+#include <asv_ros/params.h>
 
 namespace asv_risk {
 
@@ -116,34 +116,26 @@ void NmeaInputParams::validate() const {
     throw std::invalid_argument("input/queue_size must be in 1..1000000");
 }
 
-void addInputParamKeys(std::set<std::string>& known, const std::string& prefix) {
-  for (const char* k :
-       {"type", "udp/bind_address", "udp/port", "tcp/host", "tcp/port", "tcp/reconnect_min",
-        "tcp/reconnect_max", "serial/device", "serial/baud", "file/path", "file/timing", "file/rate",
-        "file/speed", "file/max_gap", "file/loop", "frame_id", "max_line_length", "queue_size", "republish"})
-    known.insert(prefix + k);
-}
-
-NmeaInputParams loadInputParams(const ros::NodeHandle& pnh, NmeaInputParams p, const std::string& prefix) {
-  getParam(pnh, prefix + "type", p.type);
-  getParam(pnh, prefix + "udp/bind_address", p.udp_bind_address);
-  getParam(pnh, prefix + "udp/port", p.udp_port);
-  getParam(pnh, prefix + "tcp/host", p.tcp_host);
-  getParam(pnh, prefix + "tcp/port", p.tcp_port);
-  getParam(pnh, prefix + "tcp/reconnect_min", p.tcp_reconnect_min);
-  getParam(pnh, prefix + "tcp/reconnect_max", p.tcp_reconnect_max);
-  getParam(pnh, prefix + "serial/device", p.serial_device);
-  getParam(pnh, prefix + "serial/baud", p.serial_baud);
-  getParam(pnh, prefix + "file/path", p.file_path);
-  getParam(pnh, prefix + "file/timing", p.file_timing);
-  getParam(pnh, prefix + "file/rate", p.file_rate);
-  getParam(pnh, prefix + "file/speed", p.file_speed);
-  getParam(pnh, prefix + "file/max_gap", p.file_max_gap);
-  getParam(pnh, prefix + "file/loop", p.file_loop);
-  getParam(pnh, prefix + "frame_id", p.frame_id);
-  getParam(pnh, prefix + "max_line_length", p.max_line_length, 1);
-  getParam(pnh, prefix + "queue_size", p.queue_size, 1);
-  getParam(pnh, prefix + "republish", p.republish);
+NmeaInputParams inputFromParams(const asv::ParamMap& in, NmeaInputParams p) {
+  p.type = in.getString("type", p.type);
+  p.udp_bind_address = in.getString("udp/bind_address", p.udp_bind_address);
+  p.udp_port = in.getInt("udp/port", p.udp_port);
+  p.tcp_host = in.getString("tcp/host", p.tcp_host);
+  p.tcp_port = in.getInt("tcp/port", p.tcp_port);
+  p.tcp_reconnect_min = in.getDouble("tcp/reconnect_min", p.tcp_reconnect_min);
+  p.tcp_reconnect_max = in.getDouble("tcp/reconnect_max", p.tcp_reconnect_max);
+  p.serial_device = in.getString("serial/device", p.serial_device);
+  p.serial_baud = in.getInt("serial/baud", p.serial_baud);
+  p.file_path = in.getString("file/path", p.file_path);
+  p.file_timing = in.getString("file/timing", p.file_timing);
+  p.file_rate = in.getDouble("file/rate", p.file_rate);
+  p.file_speed = in.getDouble("file/speed", p.file_speed);
+  p.file_max_gap = in.getDouble("file/max_gap", p.file_max_gap);
+  p.file_loop = in.getBool("file/loop", p.file_loop);
+  p.frame_id = in.getString("frame_id", p.frame_id);
+  p.max_line_length = in.getSize("max_line_length", p.max_line_length, 1);
+  p.queue_size = in.getSize("queue_size", p.queue_size, 1);
+  p.republish = in.getBool("republish", p.republish);
   p.validate();
   return p;
 }

@@ -15,36 +15,6 @@ namespace asv_risk {
 namespace {
 
 // Every private parameter the node understands; anything else under ~ is a typo and an error.
-const std::set<std::string> kKnownParams = {"own_ship",
-                                            "frame_id",
-                                            "stale_after",
-                                            "future_tolerance",
-                                            "odom_timeout",
-                                            "publish_markers",
-                                            "min_rate",
-                                            "max_rate",
-                                            "risk_level/t_max",
-                                            "risk_level/d_min",
-                                            "risk_level/t_safe",
-                                            "risk_level/d_safe",
-                                            "cri/c_dcpa",
-                                            "cri/c_tcpa",
-                                            "cri/c_b",
-                                            "cri/c_d",
-                                            "cri/c_k",
-                                            "cri/dlma",
-                                            "cri/attention_range",
-                                            "cri/speed_ratio_w",
-                                            "cri/arena_cb",
-                                            "cri/peak_bearing_deg",
-                                            "cri/zero_when_diverging",
-                                            "cri/domain_unit",
-                                            "cri/turn90_time",
-                                            "cri/advance",
-                                            "colregs/head_on_half_angle_deg",
-                                            "colregs/stern_sector_start_deg",
-                                            "colregs/max_range"};
-
 float riskColour(uint8_t level, int channel) {
   // green (none), amber (collision risk), red (urgent)
   static const float rgb[3][3] = {{0.1f, 0.8f, 0.2f}, {1.0f, 0.65f, 0.0f}, {0.9f, 0.1f, 0.1f}};
@@ -53,53 +23,8 @@ float riskColour(uint8_t level, int channel) {
 
 }  // namespace
 
-RiskNodeParams loadParams(const ros::NodeHandle& pnh) {
-  asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_risk/config/risk_node.yaml");
-  RiskNodeParams p;
-  asv_ros::getParam(pnh, "own_ship", p.own_ship);
-  asv_ros::getParam(pnh, "frame_id", p.frame_id);
-  asv_ros::getParam(pnh, "stale_after", p.stale_after);
-  asv_ros::getParam(pnh, "future_tolerance", p.future_tolerance);
-  asv_ros::getParam(pnh, "odom_timeout", p.odom_timeout);
-  asv_ros::getParam(pnh, "publish_markers", p.publish_markers);
-  asv_ros::getParam(pnh, "min_rate", p.min_rate);
-  asv_ros::getParam(pnh, "max_rate", p.max_rate);
-  auto& l = p.risk.level;
-  asv_ros::getParam(pnh, "risk_level/t_max", l.t_max_s);
-  asv_ros::getParam(pnh, "risk_level/d_min", l.d_min_m);
-  asv_ros::getParam(pnh, "risk_level/t_safe", l.t_safe_s);
-  asv_ros::getParam(pnh, "risk_level/d_safe", l.d_safe_m);
-  auto& c = p.risk.cri;
-  asv_ros::getParam(pnh, "cri/c_dcpa", c.c_dcpa);
-  asv_ros::getParam(pnh, "cri/c_tcpa", c.c_tcpa);
-  asv_ros::getParam(pnh, "cri/c_b", c.c_b);
-  asv_ros::getParam(pnh, "cri/c_d", c.c_d);
-  asv_ros::getParam(pnh, "cri/c_k", c.c_k);
-  asv_ros::getParam(pnh, "cri/dlma", c.dlma_m);
-  asv_ros::getParam(pnh, "cri/attention_range", c.attention_range_m);
-  asv_ros::getParam(pnh, "cri/speed_ratio_w", c.speed_ratio_w);
-  asv_ros::getParam(pnh, "cri/arena_cb", c.arena_cb);
-  asv_ros::getParam(pnh, "cri/peak_bearing_deg", c.peak_bearing_deg);
-  asv_ros::getParam(pnh, "cri/zero_when_diverging", c.zero_when_diverging);
-  asv_ros::getParam(pnh, "cri/domain_unit", c.safe_encounter.domain_unit_m);
-  asv_ros::getParam(pnh, "cri/turn90_time", c.safe_encounter.turn90_time_s);
-  asv_ros::getParam(pnh, "cri/advance", c.safe_encounter.advance_m);
-  auto& g = p.risk.colregs;
-  asv_ros::getParam(pnh, "colregs/head_on_half_angle_deg", g.head_on_half_angle_deg);
-  asv_ros::getParam(pnh, "colregs/stern_sector_start_deg", g.stern_sector_start_deg);
-  asv_ros::getParam(pnh, "colregs/max_range", g.max_range_m);
-  p.risk.validate();
-  if (p.frame_id.empty())
-    throw std::invalid_argument("frame_id must not be empty");
-  if (!(p.stale_after > 0.0))
-    throw std::invalid_argument("stale_after must be > 0 s");
-  if (!(p.future_tolerance >= 0.0))
-    throw std::invalid_argument("future_tolerance must be >= 0 s");
-  if (!(p.odom_timeout > 0.0))
-    throw std::invalid_argument("odom_timeout must be > 0 s");
-  if (!(p.min_rate > 0.0 && p.max_rate > p.min_rate))
-    throw std::invalid_argument("min_rate and max_rate must satisfy 0 < min_rate < max_rate");
-  return p;
+asv::RiskNodeConfig loadParams(const ros::NodeHandle& pnh) {
+  return asv_ros::loadConfig<asv::RiskNodeConfig>(pnh, "asv_risk/config/risk_node.yaml");
 }
 
 RiskNode::RiskNode(ros::NodeHandle nh, ros::NodeHandle pnh)

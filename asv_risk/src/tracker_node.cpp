@@ -6,42 +6,11 @@
 
 #include <asv_core/common/units.h>
 #include <asv_ros/conversions.h>
+#include <asv_ros/params.h>
 
-#include "asv_risk/params.h"
 #include "asv_risk/target_quality.h"
 
 namespace asv_risk {
-
-namespace {
-
-const std::set<std::string> kKnownParams = {"frame_id",
-                                            "publish_rate",
-                                            "future_tolerance",
-                                            "default_position_sigma",
-                                            "ais_velocity_sigma",
-                                            "arpa_velocity_sigma",
-                                            "gate_min",
-                                            "gate_sigmas",
-                                            "velocity_gate",
-                                            "split_after",
-                                            "accel_sigma",
-                                            "slow_speed",
-                                            "max_tracks",
-                                            "ages/ais_a/coast_after",
-                                            "ages/ais_a/drop_after",
-                                            "ages/ais_b/coast_after",
-                                            "ages/ais_b/drop_after",
-                                            "ages/ais_slow/coast_after",
-                                            "ages/ais_slow/drop_after",
-                                            "ages/arpa/coast_after",
-                                            "ages/arpa/drop_after"};
-
-void getAges(const ros::NodeHandle& pnh, const std::string& name, asv::TrackAges& a) {
-  getParam(pnh, "ages/" + name + "/coast_after", a.coast_after);
-  getParam(pnh, "ages/" + name + "/drop_after", a.drop_after);
-}
-
-}  // namespace
 
 const char* toString(TrackReject r) {
   switch (r) {
@@ -58,42 +27,12 @@ const char* toString(TrackReject r) {
   }
 }
 
-TrackerNodeParams loadTrackerParams(const ros::NodeHandle& pnh) {
-  checkUnknownParams(pnh, kKnownParams, "config/tracker.yaml");
-  TrackerNodeParams p;
-  getParam(pnh, "frame_id", p.frame_id);
-  getParam(pnh, "publish_rate", p.publish_rate);
-  getParam(pnh, "future_tolerance", p.future_tolerance);
-  getParam(pnh, "default_position_sigma", p.default_position_sigma);
-  getParam(pnh, "ais_velocity_sigma", p.ais_velocity_sigma);
-  getParam(pnh, "arpa_velocity_sigma", p.arpa_velocity_sigma);
-  asv::TrackerConfig& c = p.tracker;
-  getParam(pnh, "gate_min", c.gate_min);
-  getParam(pnh, "gate_sigmas", c.gate_sigmas);
-  getParam(pnh, "velocity_gate", c.velocity_gate);
-  getParam(pnh, "split_after", c.split_after);
-  getParam(pnh, "accel_sigma", c.accel_sigma);
-  getParam(pnh, "slow_speed", c.slow_speed);
-  getParam(pnh, "max_tracks", c.max_tracks, 1);
-  getAges(pnh, "ais_a", c.ais_a);
-  getAges(pnh, "ais_b", c.ais_b);
-  getAges(pnh, "ais_slow", c.ais_slow);
-  getAges(pnh, "arpa", c.arpa);
-  c.validate();
-  if (p.frame_id.empty())
-    throw std::invalid_argument("frame_id must not be empty");
-  if (!(p.publish_rate > 0.0 && p.publish_rate <= 100.0))
-    throw std::invalid_argument("publish_rate must be in (0, 100] Hz");
-  if (!(p.future_tolerance >= 0.0))
-    throw std::invalid_argument("future_tolerance must be >= 0 s");
-  if (!(p.default_position_sigma > 0.0 && p.ais_velocity_sigma > 0.0 && p.arpa_velocity_sigma > 0.0))
-    throw std::invalid_argument(
-        "default_position_sigma, ais_velocity_sigma and arpa_velocity_sigma must be > 0");
-  return p;
+asv::TrackerNodeConfig loadTrackerParams(const ros::NodeHandle& pnh) {
+  return asv_ros::loadConfig<asv::TrackerNodeConfig>(pnh, "config/tracker.yaml");
 }
 
 TrackReject targetToReport(const asv_msgs::Target& t, const ros::Time& array_stamp,
-                           const TrackerNodeParams& p, asv::TrackReport& r) {
+                           const asv::TrackerNodeConfig& p, asv::TrackReport& r) {
   r = asv::TrackReport();
   if (t.source == asv_msgs::Target::SOURCE_AIS) {
     if (t.mmsi == 0)

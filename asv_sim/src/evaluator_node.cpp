@@ -4,7 +4,6 @@
 #include <fstream>
 #include <sstream>
 
-#include <asv_planning/param_tree.h>
 #include <asv_ros/params.h>
 #include <filesystem>
 
@@ -12,8 +11,6 @@ namespace asv_sim {
 
 namespace {
 
-const std::set<std::string> kKnownParams = {"own_ship", "result",      "scenario",        "planner",
-                                            "seed",     "time_origin", "shutdown_at_end", "pretty"};
 
 asv::SimEvent::Type toCore(uint8_t type) {
   switch (type) {
@@ -28,27 +25,10 @@ asv::SimEvent::Type toCore(uint8_t type) {
 
 }  // namespace
 
-EvaluatorNodeParams loadEvaluatorParams(const ros::NodeHandle& pnh) {
-  EvaluatorNodeParams p;
-  asv_ros::getParam(pnh, "own_ship", p.own_ship);
-  asv_ros::getParam(pnh, "result", p.result);
-  asv_ros::getParam(pnh, "scenario", p.scenario);
-  asv_ros::getParam(pnh, "planner", p.planner);
-  asv_ros::getParam(pnh, "seed", p.seed);
-  asv_ros::getParam(pnh, "time_origin", p.time_origin);
-  asv_ros::getParam(pnh, "shutdown_at_end", p.shutdown_at_end);
-  asv_ros::getParam(pnh, "pretty", p.pretty);
-  if (p.own_ship.empty() || p.seed < 0 || !std::isfinite(p.time_origin))
-    throw std::invalid_argument(
-        "evaluator_node: own_ship must be set, seed >= 0 (see config/evaluator_node.yaml)");
-  asv::ParamMap eval;
-  XmlRpc::XmlRpcValue tree;
-  if (pnh.getParam("evaluation", tree))
-    asv_planning::flattenParams(tree, "", eval, pnh.resolveName("evaluation") + "/");
-  p.evaluation = asv::EvaluationConfig::fromParams(eval);  // rejects unknown keys, validates
-  // evaluation/ is EvaluationConfig's: fromParams rejects its unknown keys.
-  asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_sim/config/evaluator_node.yaml", {"evaluation/"});
-  return p;
+asv::EvaluatorNodeConfig loadEvaluatorParams(const ros::NodeHandle& pnh) {
+  // evaluation/ is EvaluationConfig's: its fromParams rejects the subtree's unknown keys.
+  return asv_ros::loadConfig<asv::EvaluatorNodeConfig>(pnh, "asv_sim/config/evaluator_node.yaml",
+                                                         {"evaluation/"});
 }
 
 EvaluatorNode::EvaluatorNode(ros::NodeHandle nh, ros::NodeHandle pnh)

@@ -30,124 +30,14 @@ namespace {
 // Stamps are sim time on a fixed epoch, so that two runs of the same scenario record the same stamps.
 constexpr double kEpoch = 1.0e9;  // [s] ROS time of simulation time 0
 
-const std::set<std::string> kKnownParams = {"scenario",
-                                            "lockstep_participants",
-                                            "lockstep_clock_every_step",
-                                            "seed",
-                                            "max_sim_time",
-                                            "keep_up_topic",
-                                            "keep_up_lead",
-                                            "keep_up_timeout",
-                                            "rate",
-                                            "publish_clock",
-                                            "odom_rate",
-                                            "ships_rate",
-                                            "emit_topic",
-                                            "emit_udp",
-                                            "udp_host",
-                                            "udp_port",
-                                            "stop_on_collision",
-                                            "shutdown_at_end",
-                                            "linger_for",
-                                            "linger_max",
-                                            "start_delay",
-                                            "dt",
-                                            "collision_distance",
-                                            "wind_speed",
-                                            "wind_direction_deg",
-                                            "wave_height",
-                                            "wave_direction_deg",
-                                            "wave_length",
-                                            "give_way_alteration_deg",
-                                            "give_way_tcpa",
-                                            "give_way_dcpa",
-                                            "waypoint_acceptance",
-                                            "ais",
-                                            "radar",
-                                            "radar_range",
-                                            "radar_period",
-                                            "range_noise",
-                                            "bearing_noise_deg",
-                                            "speed_noise_kn",
-                                            "course_noise_deg",
-                                            "radar_dropout",
-                                            "ais_dropout",
-                                            "static_interval"};
-
 }  // namespace
 
 SimNodeParams loadParams(const ros::NodeHandle& pnh) {
-  asv_ros::checkUnknownParams(pnh, kKnownParams, "asv_sim/config/sim_node.yaml");
   SimNodeParams p;
-  asv_ros::getParam(pnh, "scenario", p.scenario);
-  int seed = static_cast<int>(p.seed);
-  asv_ros::getParam(pnh, "seed", seed);
-  if (seed < 0)
-    throw std::invalid_argument("seed must be >= 0");
-  p.seed = static_cast<uint64_t>(seed);
-  asv_ros::getParam(pnh, "rate", p.rate);
-  asv_ros::getParam(pnh, "publish_clock", p.publish_clock);
-  asv_ros::getParam(pnh, "odom_rate", p.odom_rate);
-  asv_ros::getParam(pnh, "ships_rate", p.ships_rate);
-  asv_ros::getParam(pnh, "emit_topic", p.emit_topic);
-  asv_ros::getParam(pnh, "emit_udp", p.emit_udp);
-  asv_ros::getParam(pnh, "udp_host", p.udp_host);
-  asv_ros::getParam(pnh, "udp_port", p.udp_port);
-  asv_ros::getParam(pnh, "stop_on_collision", p.stop_on_collision);
-  asv_ros::getParam(pnh, "shutdown_at_end", p.shutdown_at_end);
-  asv_ros::getParam(pnh, "linger_for", p.linger_for);
-  asv_ros::getParam(pnh, "linger_max", p.linger_max);
-  asv_ros::getParam(pnh, "start_delay", p.start_delay);
-  asv_ros::getParam(pnh, "max_sim_time", p.max_sim_time);
-  asv_ros::getParam(pnh, "keep_up_topic", p.keep_up_topic);
-  asv_ros::getParam(pnh, "keep_up_lead", p.keep_up_lead);
-  asv_ros::getParam(pnh, "keep_up_timeout", p.keep_up_timeout);
+  static_cast<asv::SimNodeConfig&>(p) =
+      asv_ros::loadConfig<asv::SimNodeConfig>(pnh, "asv_sim/config/sim_node.yaml");
   p.lockstep = asv_ros::lockstepEnabled();
   p.lockstep_timeout = asv_ros::lockstepTimeout();
-  asv_ros::getParam(pnh, "lockstep_participants", p.lockstep_participants);
-  asv_ros::getParam(pnh, "lockstep_clock_every_step", p.lockstep_clock_every_step);
-  if (!(p.keep_up_lead > 0.0) || !(p.keep_up_timeout > 0.0))
-    throw std::invalid_argument("keep_up_lead and keep_up_timeout must be > 0 s");
-  if (!(p.max_sim_time >= 0.0))
-    throw std::invalid_argument("max_sim_time must be >= 0 s (0: the scenario's duration)");
-  auto& s = p.sim;
-  asv_ros::getParam(pnh, "dt", s.dt);
-  asv_ros::getParam(pnh, "collision_distance", s.collision_distance);
-  asv_ros::getParam(pnh, "wind_speed", s.environment.wind_speed);
-  double wind_dir = asv::radToDeg(s.environment.wind_direction),
-         wave_dir = asv::radToDeg(s.environment.wave_direction);
-  asv_ros::getParam(pnh, "wind_direction_deg", wind_dir);
-  asv_ros::getParam(pnh, "wave_direction_deg", wave_dir);
-  s.environment.wind_direction = asv::degToRad(wind_dir);
-  s.environment.wave_direction = asv::degToRad(wave_dir);
-  asv_ros::getParam(pnh, "wave_height", s.environment.wave_height);
-  asv_ros::getParam(pnh, "wave_length", s.environment.wave_length);
-  asv_ros::getParam(pnh, "give_way_alteration_deg", s.traffic.give_way_alteration_deg);
-  asv_ros::getParam(pnh, "give_way_tcpa", s.traffic.give_way_tcpa);
-  asv_ros::getParam(pnh, "give_way_dcpa", s.traffic.give_way_dcpa);
-  asv_ros::getParam(pnh, "waypoint_acceptance", s.traffic.waypoint_acceptance);
-  auto& e = p.emitter;
-  asv_ros::getParam(pnh, "ais", e.ais);
-  asv_ros::getParam(pnh, "radar", e.radar);
-  asv_ros::getParam(pnh, "radar_range", e.radar_range);
-  asv_ros::getParam(pnh, "radar_period", e.radar_period);
-  asv_ros::getParam(pnh, "range_noise", e.range_noise);
-  asv_ros::getParam(pnh, "bearing_noise_deg", e.bearing_noise_deg);
-  asv_ros::getParam(pnh, "speed_noise_kn", e.speed_noise_kn);
-  asv_ros::getParam(pnh, "course_noise_deg", e.course_noise_deg);
-  asv_ros::getParam(pnh, "radar_dropout", e.radar_dropout);
-  asv_ros::getParam(pnh, "ais_dropout", e.ais_dropout);
-  asv_ros::getParam(pnh, "static_interval", e.static_interval);
-  if (p.scenario.empty())
-    throw std::invalid_argument("~scenario (path of a scenario file) is required");
-  if (!(p.rate >= 0.0) || !std::isfinite(p.rate))
-    throw std::invalid_argument("rate must be >= 0 (0: as fast as possible)");
-  if (!(p.odom_rate > 0.0) || !(p.ships_rate > 0.0))
-    throw std::invalid_argument("odom_rate and ships_rate must be > 0 Hz");
-  if (p.udp_port <= 0 || p.udp_port > 65535)
-    throw std::invalid_argument("udp_port must be in 1..65535");
-  s.validate();
-  e.validate();
   return p;
 }
 

@@ -184,3 +184,37 @@ TEST(PlanFollower, NoRiskBlindPlanningBeforeTheFirstAssessmentHadTimeToArrive) {
   EXPECT_FALSE(asv::riskBlindPlanning(true, start + 500.0, start, stale_after));  // a fresh picture
   EXPECT_FALSE(asv::riskBlindPlanning(false, start + 500.0, -1.0, stale_after));  // no input at all yet
 }
+
+// Which tracks reach the planner: unassessed tracks wait for their assessment while the risk picture
+// is alive, and are planned against risk-blind once it is silent; the own track and broken tracks never.
+TEST(PlanFollower, PlannerTargetsFollowTheRiskPicture) {
+  auto track = [](const std::string& id, double x) {
+    asv::ShipState s;
+    s.id = id;
+    s.position = {x, 1000.0};
+    s.course = asv::kPi;
+    s.speed = 5.0;
+    return s;
+  };
+  asv::ShipState broken = track("broken", 0.0);
+  broken.speed = std::nan("");
+  const std::vector<asv::ShipState> tracks = {track("own", 0.0), track("a", 100.0), track("new", 200.0),
+                                              broken};
+  std::map<std::string, asv::PlannerTarget> assessed;
+  assessed["a"].risk = asv::RiskLevel::Urgent;
+  assessed["a"].role = asv::OwnRole::GiveWay;
+  assessed["broken"].risk = asv::RiskLevel::Urgent;
+
+  const auto alive = asv::selectPlannerTargets("own", tracks, assessed, true);
+  ASSERT_EQ(alive.size(), 1u);
+  EXPECT_EQ(alive[0].state.id, "a");
+  EXPECT_EQ(alive[0].risk, asv::RiskLevel::Urgent);
+  EXPECT_EQ(alive[0].role, asv::OwnRole::GiveWay);
+  EXPECT_DOUBLE_EQ(alive[0].state.position.x(), 100.0);
+
+  const auto silent = asv::selectPlannerTargets("own", tracks, assessed, false);
+  ASSERT_EQ(silent.size(), 2u);
+  EXPECT_EQ(silent[1].state.id, "new");
+  EXPECT_EQ(silent[1].role, asv::OwnRole::None);  // risk-blind
+  EXPECT_EQ(silent[1].risk, asv::RiskLevel::None);
+}

@@ -81,6 +81,8 @@ struct DssaExchangeParams {
   double drop_outgoing_from = 0.0;    // [s, ROS time] tests: own intentions are not sent from ...
   double drop_outgoing_until = 0.0;   // [s, ROS time] ... until this time (until <= from: never dropped)
 
+  // The keys above from a map of the exchange/ subtree; std::invalid_argument on a value out of range.
+  static DssaExchangeParams fromParams(const asv::ParamMap& exchange);
   // Reads ~exchange/*; throws std::invalid_argument on an unknown key or a value out of range.
   static DssaExchangeParams load(const ros::NodeHandle& pnh);
 };
@@ -94,8 +96,8 @@ public:
   DssaRosAgent(const DssaRosAgent&) = delete;
   DssaRosAgent& operator=(const DssaRosAgent&) = delete;
 
-  // True when `planner` is dssa or dssa_plus and ~distributed (default true) is set.
-  static bool wanted(const std::string& planner, const ros::NodeHandle& pnh);
+  // True when `planner` is dssa or dssa_plus and ~distributed is set.
+  static bool wanted(const std::string& planner, bool distributed);
   // The DssaConfig of a loaded dssa / dssa_plus plugin: its sea-scale defaults, the scenario's
   // planner_params and ~<planner>/ merged and validated. Throws std::invalid_argument for other plugins.
   static asv::DssaConfig configOf(const PlannerPlugin& plugin);

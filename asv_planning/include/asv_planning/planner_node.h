@@ -14,6 +14,7 @@
 
 #include <asv_core/common/clock_jump.h>
 #include <asv_core/planning/plan_follower.h>
+#include <asv_core/planning/planner_node_config.h>
 #include <asv_core/planning/planning.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
@@ -28,39 +29,12 @@
 
 namespace asv_planning {
 
-struct PlannerNodeParams {
-  std::string planner = "aco";  // plugin short name
-  std::string ship = "own";     // ship this node plans for (frames, plan.ship)
-  std::string frame_id = "map";
-  std::string scenario;  // optional scenario file: goal, static obstacles, planner_params
-  bool has_goal = false;
-  Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // [m] goal_x, goal_y
-  double cruise_speed = 0.0;                       // [m/s] 0: the speed the ship has when the node starts
-  double replan_period = 30.0;                     // [s] replan at least this often
-  double min_replan_interval = 2.0;                // [s] never replan faster than this
-  double time_budget = 0.5;                        // [s] wall time a plugin may use per plan
-  double lockstep_time_budget = 10.0;  // [s] the same in lockstep (the simulation waits for the plan)
-  double overrun_factor = 2.0;    // a plan that took longer than this x time_budget is discarded: fallback
-  double fault_plan_delay = 0.0;  // [s, wall] fault injection (tests): sleep this long in every plan
-  double setpoint_rate = 1.0;     // [Hz] set-points are re-sent this often
-  double waypoint_acceptance = 150.0;  // [m] next plan waypoint once within this radius
-  double fallback_speed_factor = 0.5;  // fallback: hold course at this fraction of the speed
-  double extremis_range = 926.0;       // [m] fallback: hard starboard when an urgent target is this close
-  double stale_after = 10.0;           // [s] risk/targets older than this are ignored
-  double plan_clearance = 370.4;       // [m] replan when the rest of the plan would pass a target closer
-  double prediction_horizon = 1200.0;  // [s] how far ahead the plan is checked
-  int seed = 1;
-  asv::OwnShipLimits limits;
-  double min_separation = 0.0;    // [m] 0: the scenario's safety.min_separation_m (else the planners' own)
-  bool stand_on_policy = true;    // Rule 17(a)(i): stand on for compliant give-way targets (PlanFollower)
-  double risk_clear_time = 60.0;  // [s]
-};
-
 class PlannerNode {
 public:
   PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh);
 
 private:
+  PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::ParamMap& params);
   void odomCallback(const nav_msgs::Odometry::ConstPtr& msg);
   void riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg);
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
@@ -77,7 +51,7 @@ private:
   void checkClock();
 
   ros::NodeHandle nh_, pnh_;
-  PlannerNodeParams params_;
+  asv::PlannerNodeConfig params_;  // follower: as loaded (the plan follower gets followerConfig())
   PluginLoader loader_;
   pluginlib::UniquePtr<PlannerPlugin> plugin_;
   std::vector<asv::StaticObstacle> obstacles_;

@@ -27,19 +27,8 @@
 
 namespace asv_risk {
 
-// ais_node's parameters: the ingestion nodes' shared ones (asv_risk/params.h; AIS defaults: 5000
-// ships, forgotten after 900 s) and the AIS-specific ones.
-struct AisNodeParams : IngestionParams {
-  AisNodeParams() {
-    max_targets = 5000;
-    forget_after = 900.0;
-    input.frame_id = "ais";
-  }
-  double position_sigma_high = 10.0;  // [m] 1-sigma of a fix with the accuracy flag set (DGNSS)
-  double position_sigma_low = 30.0;   // [m] 1-sigma of a fix without it (GNSS)
-  asv::ais::DecoderConfig decoder;
-  std::size_t max_static = 10000;  // ships whose static data is remembered
-};
+// ais_node's parameters (config/ais_node.yaml): asv::AisNodeConfig and the input (frame "ais").
+using AisNodeParams = IngestionNodeParams<asv::AisNodeConfig>;
 
 AisNodeParams loadAisParams(const ros::NodeHandle& pnh);
 

@@ -19,6 +19,7 @@
 #include <string>
 
 #include <asv_core/codec/arpa.h>
+#include <asv_core/tracking/arpa_targets.h>
 #include <asv_core/common/clock_jump.h>
 #include <asv_core/common/geodesy.h>
 #include <asv_msgs/TargetArray.h>
@@ -32,22 +33,9 @@
 
 namespace asv_risk {
 
-// arpa_node's parameters: the ingestion nodes' shared ones (asv_risk/params.h; radar defaults: 1000
-// targets, forgotten after 120 s, input on port 10111 at 4800 baud) and the radar-specific ones.
-struct ArpaNodeParams : IngestionParams {
-  ArpaNodeParams() {
-    input.frame_id = "radar";
-    input.udp_port = 10111;
-    input.tcp_port = 10111;
-    input.serial_baud = 4800;
-  }
-  double odom_timeout = 2.0;           // [s] own position/heading older than this is not used
-  double range_sigma = 30.0;           // [m] smallest 1-sigma of a TTM range
-  double range_sigma_fraction = 0.01;  // 1-sigma of a TTM range as a fraction of it (IMO: 1 %)
-  double bearing_sigma_deg = 1.0;      // [deg] 1-sigma of a TTM bearing
-  double tll_sigma = 50.0;             // [m] 1-sigma of a TLL position
-  asv::arpa::ArpaConfig arpa;
-};
+// arpa_node's parameters (config/arpa_node.yaml): asv::ArpaNodeConfig and the input (frame "radar",
+// port 10111, 4800 baud: a radar's NMEA output).
+using ArpaNodeParams = IngestionNodeParams<asv::ArpaNodeConfig>;
 
 ArpaNodeParams loadArpaParams(const ros::NodeHandle& pnh);
 
@@ -70,20 +58,11 @@ public:
   void handleLine(const std::string& line, const ros::Time& stamp);
 
 private:
-  struct Radar {
-    asv_msgs::Target target;
-    bool has_velocity = false;
-    bool dirty = false;
-  };
-
   void handleSentence(const asv::nmea::Sentence& s, const ros::Time& stamp);
   void handleTtm(const asv::nmea::Sentence& s, const ros::Time& stamp);
   void handleTll(const asv::nmea::Sentence& s, const ros::Time& stamp);
   void handleOsd(const asv::nmea::Sentence& s, const ros::Time& stamp);
-  Radar* radar(int number, const ros::Time& stamp);
-  void setVelocity(Radar& r, const asv::arpa::TrackedTarget& tt);
   void odomCallback(const nav_msgs::Odometry::ConstPtr& msg);
-  bool ownHeading(const ros::Time& stamp, double& heading) const;
   void reject(ArpaReject why, int number);
   void parseError(asv::arpa::Error e, const char* type);
   void publish();
@@ -95,24 +74,16 @@ private:
   ArpaNodeParams params_;
   asv::LocalFrame frame_;
   LineFramer framer_;
-  std::map<int, Radar> radars_;
+  asv::ArpaTargetTable table_;
   ros::Subscriber odom_sub_;
   ros::Publisher targets_pub_;
   ros::Timer diag_timer_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kIngestion};  // before input_, which subscribes through it
   diagnostic_updater::Updater updater_;
 
-  bool has_odom_ = false;
-  Eigen::Vector2d own_position_ = Eigen::Vector2d::Zero();
-  double own_heading_ = 0.0;  // [rad] nautical
-  ros::Time odom_stamp_;
-  bool has_osd_heading_ = false;
-  double osd_heading_ = 0.0;
-  ros::Time osd_stamp_;
-
   std::uint64_t rejected_[static_cast<std::size_t>(ArpaReject::kCount)] = {};
   std::uint64_t parse_errors_[static_cast<std::size_t>(asv::arpa::Error::kCount)] = {};
-  std::uint64_t ttm_ = 0, tll_ = 0, osd_ = 0, other_ = 0, lost_ = 0, published_ = 0;
+  std::uint64_t ttm_ = 0, tll_ = 0, osd_ = 0, other_ = 0, published_ = 0;
   ros::WallTime last_sentence_, diag_time_;
   std::uint64_t diag_sentences_ = 0, diag_rejected_ = 0, diag_drops_ = 0;
   asv::ClockJumpDetector clock_;

@@ -28,6 +28,8 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 
+#include <asv_core/common/param_map.h>
+
 namespace asv_risk {
 
 struct NmeaInputParams {
@@ -60,11 +62,9 @@ struct NmeaInputParams {
   void validate() const;  // throws std::invalid_argument
 };
 
-// Adds the input parameter keys (under `prefix`) to a node's set of known keys.
-void addInputParamKeys(std::set<std::string>& known, const std::string& prefix = "input/");
-// Reads the input parameters under `prefix`; `defaults` gives the node's own defaults.
-NmeaInputParams loadInputParams(const ros::NodeHandle& pnh, NmeaInputParams defaults,
-                                const std::string& prefix = "input/");
+// Reads the input parameters (the node's input/ subtree, as ParamMap::sub("input")); `defaults` gives
+// the node's own defaults. std::invalid_argument naming a bad value.
+NmeaInputParams inputFromParams(const asv::ParamMap& params, NmeaInputParams defaults);
 
 // Splits a line into sentences (resynchronising after garbage or a broken sentence at the next
 // `$`/`!`) and counts every rejection by reason.

@@ -1,10 +1,10 @@
-// Parameter helpers of the asv_risk nodes: the stack's strict reader and the map-frame origin.
+// The ingestion nodes' (ais_node, arpa_node) parameters: the core's config (asv_core/tracking/
+// ingestion_config.h) and, as ROS glue, the input they read from (input/ subtree).
 #pragma once
 
-#include <set>
-#include <stdexcept>
 #include <string>
 
+#include <asv_core/tracking/ingestion_config.h>
 #include <asv_ros/params.h>
 #include <ros/ros.h>
 
@@ -12,35 +12,36 @@
 
 namespace asv_risk {
 
-// The stack's strict reader (asv_ros/params.h), by the names the asv_risk nodes use.
-using asv_ros::checkUnknownParams;
-using asv_ros::getParam;
+// When origin_scenario is set, takes the origin from that scenario file (format 1); throws
+// std::invalid_argument when the file has none (and naming the file, line and key when it is bad).
+void resolveOrigin(asv::IngestionConfig& c);
 
-// The parameters both ingestion nodes (ais_node, arpa_node) read, with the same meaning: the map
-// frame's origin and id, the publishing rate, the range and size of the target table, the silence
-// warning, the framer's limit and the input (config/ais_node.yaml, config/arpa_node.yaml).
-struct IngestionParams {
-  double origin_lat_deg = 0.0;  // required
-  double origin_lon_deg = 0.0;  // required
-  std::string frame_id = "map";
-  double publish_rate = 10.0;             // [Hz] the node's targets topic
-  double max_range = 200000.0;            // [m] positions farther from the origin are rejected
-  std::size_t max_targets = 1000;         // targets remembered; the least recently heard is forgotten
-  double forget_after = 120.0;            // [s] a target not heard for this long is forgotten
-  double silence_warning = 30.0;          // [s] diagnostics warn when no sentence came for this long
-  std::size_t max_sentence_length = 512;  // [bytes] framer limit (tag block included)
+template <typename CoreConfig>
+struct IngestionNodeParams : CoreConfig {
   NmeaInputParams input;
 };
 
-// The keys of IngestionParams, the input's among them.
-std::set<std::string> ingestionKeys();
-// Reads IngestionParams' keys into p (keeping p's values as defaults; `input` as the input's) and
-// checks them: std::invalid_argument naming the first bad one.
-void loadIngestionParams(const ros::NodeHandle& pnh, IngestionParams& p);
+// The node's parameters from its private namespace: the core config by its fromParams(), the input
+// from input/ (`input_defaults` the node's own), the origin resolved (origin_scenario: the origin of
+// that scenario file); an unknown key anywhere is std::invalid_argument naming it and `yaml`.
+template <typename CoreConfig>
+IngestionNodeParams<CoreConfig> loadIngestionParams(const ros::NodeHandle& pnh, const NmeaInputParams& input_defaults,
+                                                    const std::string& yaml) {
+  const asv::ParamMap params = asv_ros::readParams(pnh);
+  IngestionNodeParams<CoreConfig> p;
+  try {
+    static_cast<CoreConfig&>(p) = CoreConfig::fromParams(params);
+  } catch (const std::invalid_argument&) {
+    asv_ros::rejectTypoBehindError(params, yaml, {"input/"});
+    throw;
+  }
+  const asv::ParamMap input = params.sub("input");
+  p.input = inputFromParams(input, input_defaults);
+  asv_ros::rejectUnknown(params, yaml, {"input/"});
+  asv_ros::rejectUnknown(input, yaml);
+  resolveOrigin(p);
+  return p;
+}
 
-// Reads the map-frame origin: `origin_scenario` (a scenario file, format 1) when set and non-empty,
-// so that a launch takes the origin from the scenario it runs; else the required
-// `origin_lat_deg`/`origin_lon_deg`. Throws std::invalid_argument when neither is usable.
-void getOrigin(const ros::NodeHandle& pnh, double& lat_deg, double& lon_deg);
 
 }  // namespace asv_risk

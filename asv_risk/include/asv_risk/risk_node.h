@@ -12,6 +12,7 @@
 
 #include <asv_core/common/clock_jump.h>
 #include <asv_core/risk/risk_assessment.h>
+#include <asv_core/risk/risk_node_config.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
@@ -28,21 +29,9 @@
 
 namespace asv_risk {
 
-struct RiskNodeParams {
-  std::string own_ship = "own";   // own ship name (labels, RiskAssessment.own_ship)
-  std::string frame_id = "map";   // working frame; other frames are transformed through tf2
-  double stale_after = 60.0;      // [s] targets whose stamp is older than this are skipped
-  double future_tolerance = 2.0;  // [s] targets stamped further in the future are skipped
-  double odom_timeout = 5.0;      // [s] no assessment while the own odometry is older than this
-  bool publish_markers = true;
-  double min_rate = 0.5;   // [Hz] diagnostics: expected /risk rate window
-  double max_rate = 50.0;  // [Hz]
-  asv::RiskConfig risk;
-};
-
-// Reads every parameter (with the defaults above) from the private node handle; throws
-// std::invalid_argument naming the parameter when a value is invalid.
-RiskNodeParams loadParams(const ros::NodeHandle& pnh);
+// The node's parameters (asv::RiskNodeConfig, config/risk_node.yaml) from the private node handle;
+// throws std::invalid_argument naming the parameter when a value is invalid or unknown.
+asv::RiskNodeConfig loadParams(const ros::NodeHandle& pnh);
 
 class RiskNode {
 public:
@@ -62,7 +51,7 @@ private:
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
 
   ros::NodeHandle nh_, pnh_;
-  RiskNodeParams params_;
+  asv::RiskNodeConfig params_;
   asv::RiskAssessor assessor_;
   ros::Subscriber odom_sub_, targets_sub_;
   ros::Publisher risk_pub_, marker_pub_;

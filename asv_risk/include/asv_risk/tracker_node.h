@@ -13,6 +13,7 @@
 
 #include <asv_core/common/clock_jump.h>
 #include <asv_core/tracking/tracker.h>
+#include <asv_core/tracking/tracker_node_config.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -20,17 +21,8 @@
 
 namespace asv_risk {
 
-struct TrackerNodeParams {
-  std::string frame_id = "map";
-  double publish_rate = 2.0;             // [Hz] targets
-  double future_tolerance = 2.0;         // [s] reports stamped further in the future are rejected
-  double default_position_sigma = 50.0;  // [m] when a report's covariance is all 0 (unknown)
-  double ais_velocity_sigma = 0.2;       // [m/s] 1-sigma of an AIS velocity per axis
-  double arpa_velocity_sigma = 0.5;      // [m/s] 1-sigma of an ARPA velocity per axis
-  asv::TrackerConfig tracker;
-};
-
-TrackerNodeParams loadTrackerParams(const ros::NodeHandle& pnh);
+// The node's parameters (config/tracker.yaml); std::invalid_argument naming a bad or unknown one.
+asv::TrackerNodeConfig loadTrackerParams(const ros::NodeHandle& pnh);
 
 // Why a reported target did not reach the tracker.
 enum class TrackReject { kNone = 0, kFrame, kSource, kNonFinite, kFuture, kCount };
@@ -39,7 +31,7 @@ const char* toString(TrackReject r);
 // Converts one target of an ais/targets or arpa/targets array (header stamp `array_stamp`) into a
 // tracker report; kNone on success. Exposed for tests.
 TrackReject targetToReport(const asv_msgs::Target& t, const ros::Time& array_stamp,
-                           const TrackerNodeParams& p, asv::TrackReport& out);
+                           const asv::TrackerNodeConfig& p, asv::TrackReport& out);
 
 class TrackerNode {
 public:
@@ -55,7 +47,7 @@ private:
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
 
   ros::NodeHandle nh_, pnh_;
-  TrackerNodeParams params_;
+  asv::TrackerNodeConfig params_;
   asv::Tracker tracker_;
   // Last message per MMSI / radar number: static data and names for the published tracks.
   std::map<std::uint32_t, asv_msgs::Target> ais_meta_;

@@ -15,6 +15,7 @@
 
 #include <asv_core/common/clock_jump.h>
 #include <asv_core/eval/evaluation.h>
+#include <asv_core/eval/evaluator_node_config.h>
 #include <asv_core/sim/scenario.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
@@ -25,19 +26,9 @@
 
 namespace asv_sim {
 
-struct EvaluatorNodeParams {
-  std::string own_ship = "own";  // id of the own ship in sim/ships
-  std::string result;            // path of the result file ("" = do not write)
-  std::string scenario;          // optional scenario file: name, goals, safety threshold, ship list
-  std::string planner;           // planner name for the result ("" = from <own>/plan or the scenario)
-  int seed = 1;                  // seed for the result (the run's planner/sim seed)
-  double time_origin = 1.0e9;    // [s] ROS time of simulation time 0 (sim_node's epoch)
-  bool shutdown_at_end = true;   // shut the node down once the result is written
-  bool pretty = true;            // indented JSON (false: one line)
-  asv::EvaluationConfig evaluation;
-};
-
-EvaluatorNodeParams loadEvaluatorParams(const ros::NodeHandle& pnh);
+// The node's parameters (asv::EvaluatorNodeConfig, config/evaluator_node.yaml); std::invalid_argument
+// naming a bad or unknown one.
+asv::EvaluatorNodeConfig loadEvaluatorParams(const ros::NodeHandle& pnh);
 
 class EvaluatorNode {
 public:
@@ -54,7 +45,7 @@ private:
   double simTime(const ros::Time& stamp) const { return stamp.toSec() - params_.time_origin; }
 
   ros::NodeHandle nh_, pnh_;
-  EvaluatorNodeParams params_;
+  asv::EvaluatorNodeConfig params_;
   std::unique_ptr<asv::Scenario> scenario_;
   std::unique_ptr<asv::RunRecorder> recorder_;
   asv::ClockJumpDetector clock_;  // a replayed run that loops starts a new recording

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <asv_core/sim/lockstep.h>
+#include <asv_core/sim/sim_node_config.h>
 #include <asv_core/sim/simulation.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/LockstepAck.h>
@@ -26,43 +27,12 @@
 
 namespace asv_sim {
 
-struct SimNodeParams {
-  std::string scenario;       // path of a scenario file (format 1)
-  uint64_t seed = 1;          // NMEA noise and dropouts
-  double rate = 1.0;          // real-time factor; 0 = as fast as possible
-  bool publish_clock = true;  // drive /clock (the launch sets /use_sim_time)
-  double odom_rate = 10.0;    // [Hz, sim time] odometry and tf
-  double ships_rate = 2.0;    // [Hz, sim time] ground truth and markers
-  bool emit_topic = true;     // publish NMEA on sim/nmea
-  bool emit_udp = false;      // also send NMEA as UDP datagrams (one sentence each)
-  std::string udp_host = "127.0.0.1";
-  int udp_port = 10110;
-  bool stop_on_collision = false;
-  bool shutdown_at_end = true;  // shut the node down when the scenario ends (launch: required="true")
-  // Before shutting down, wait (publishing the final clock) until this node has left the master, at
-  // most linger_max seconds: the evaluator writes its result after the END event, and the launch ends
-  // when sim_node (required) does. Empty: wait 1 s only.
-  std::string linger_for;
-  double linger_max = 60.0;   // [s, wall]
-  double start_delay = 1.0;   // [s, wall] wait for subscribers before time starts
-  double max_sim_time = 0.0;  // [s] end the run here if earlier than the scenario end (0: no limit)
-  // rate 0 runs "as fast as the subscribers keep up": the simulation never gets more than keep_up_lead
-  // simulated seconds ahead of the last asv_msgs/RiskAssessment on keep_up_topic (the pipeline's
-  // output), waiting at most keep_up_timeout wall seconds each time (then it goes on: a pipeline that
-  // is not there does not stop the simulation). "" disables the wait.
-  std::string keep_up_topic = "/risk";
-  double keep_up_lead = 2.0;     // [s, sim]
-  double keep_up_timeout = 1.0;  // [s, wall]
-  // Lockstep (global parameter /lockstep): the simulation advances a step only when every participant
-  // has done that step's work (asv_core/sim/lockstep.h); rate, start_delay and keep_up_* do not apply.
+// sim_node's parameters: its own (asv::SimNodeConfig, config/sim_node.yaml) and the global lockstep
+// ones (/lockstep: the simulation advances a step only when every participant has done that step's
+// work, asv_core/sim/lockstep.h; rate, start_delay and keep_up_* then do not apply).
+struct SimNodeParams : asv::SimNodeConfig {
   bool lockstep = false;
-  double lockstep_timeout = 30.0;                  // [s, wall] global /lockstep_timeout
-  std::vector<std::string> lockstep_participants;  // node names the first step waits for
-  // rosbag record stamps a message with its own clock at receipt, and rosbag play replays by that
-  // time: a recorded run needs /clock at every step (else only at steps with work, about 22 % faster).
-  bool lockstep_clock_every_step = false;
-  asv::SimConfig sim;
-  asv::EmitterConfig emitter;
+  double lockstep_timeout = 30.0;  // [s, wall] global /lockstep_timeout
 };
 
 SimNodeParams loadParams(const ros::NodeHandle& pnh);

@@ -15,6 +15,7 @@ PlanningProblem lazarowskaProblem(const LazarowskaShip& own, const std::vector<L
   p.own.course = p.own.heading = wrapTwoPi(degToRad(own.course_deg));
   p.own.speed = knotsToMps(own.speed_kn);
   p.limits.max_speed = p.own.speed;
+  p.limits.turn_rate = kLazarowskaTurnRate;
   p.goal = courseSpeedToVelocity(p.own.course, nmToMetres(goal_range_nm));  // on the initial course line
   const ColregsConfig colregs;
   int n = 0;

@@ -4,15 +4,26 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "asv_core/common/units.h"
+
 namespace asv {
 
 void PlanFollowerConfig::validate() const {
-  if (!(cruise_speed >= 0.0 && replan_period > 0 && min_replan_interval >= 0 && time_budget > 0 &&
-        waypoint_acceptance > 0 && fallback_speed_factor >= 0 && fallback_speed_factor <= 1 &&
-        extremis_range >= 0 && plan_clearance >= 0 && prediction_horizon > 0 && limits.max_speed > 0 &&
-        min_separation >= 0 && risk_clear_time >= 0 && limits.min_speed >= 0 &&
-        limits.min_speed <= limits.max_speed && limits.turn_rate > 0 && limits.turn_delay >= 0))
-    throw std::invalid_argument("plan follower: a parameter is out of range (see planner_node.yaml)");
+  auto require = [](bool ok, const char* what) {
+    if (!ok)
+      throw std::invalid_argument(std::string("plan follower: ") + what + " (see planner_node.yaml)");
+  };
+  require(cruise_speed >= 0.0, "cruise_speed must be >= 0 m/s");
+  require(replan_period > 0 && min_replan_interval >= 0, "replan_period must be > 0, min_replan_interval >= 0 s");
+  require(time_budget > 0, "time_budget must be > 0 s");
+  require(waypoint_acceptance > 0, "waypoint_acceptance must be > 0 m");
+  require(fallback_speed_factor >= 0 && fallback_speed_factor <= 1, "fallback_speed_factor must be in [0, 1]");
+  require(extremis_range >= 0 && plan_clearance >= 0, "extremis_range and plan_clearance must be >= 0 m");
+  require(prediction_horizon > 0, "prediction_horizon must be > 0 s");
+  require(min_separation >= 0 && risk_clear_time >= 0, "min_separation and risk_clear_time must be >= 0");
+  require(limits.max_speed > 0 && limits.min_speed >= 0 && limits.min_speed <= limits.max_speed,
+          "speeds must satisfy 0 <= min_speed <= max_speed, max_speed > 0");
+  require(limits.turn_rate > 0 && limits.turn_delay >= 0, "turn_rate must be > 0, turn_delay >= 0");
 }
 
 PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
@@ -40,6 +51,23 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
 
 bool riskBlindPlanning(bool risk_fresh, double now, double first_input, double stale_after) {
   return !risk_fresh && first_input >= 0.0 && now - first_input >= stale_after;
+}
+
+std::vector<PlannerTarget> selectPlannerTargets(const std::string& own_id, const std::vector<ShipState>& tracks,
+                                                const std::map<std::string, PlannerTarget>& assessed,
+                                                bool risk_alive) {
+  std::vector<PlannerTarget> out;
+  for (const ShipState& s : tracks) {
+    if (s.id == own_id || !allFinite({s.position.x(), s.position.y(), s.course, s.speed}))
+      continue;
+    auto it = assessed.find(s.id);
+    if (risk_alive && it == assessed.end())
+      continue;
+    PlannerTarget t = it == assessed.end() ? PlannerTarget() : it->second;
+    t.state = s;
+    out.push_back(t);
+  }
+  return out;
 }
 
 bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {

@@ -38,7 +38,7 @@ struct PlanFollowerConfig {
   double risk_clear_time = 60.0;       // [s] a target's risk must stay none, with its CPA past, this
                                        // long before a new rise replans again (tracking noise flickers
                                        // round thresholds; a plan that works lowers the risk)
-  OwnShipLimits limits{10.0, 0.0, 0.0175, 10.0};
+  OwnShipLimits limits;
 
   void validate() const;  // throws std::invalid_argument
   // Keys: the field names; limits as max_speed, min_speed, turn_rate, turn_delay. Unknown keys are
@@ -61,6 +61,16 @@ bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
 // that, at start-up, tracks reach the planner before their first assessment: they are left out.
 // Times in seconds on one clock; first_input < 0: nothing received yet.
 bool riskBlindPlanning(bool risk_fresh, double now, double first_input, double stale_after);
+
+// The targets a plan is made against (planner_node's policy): the fresh tracks (`tracks`), each with
+// the risk picture of its assessment when `assessed` (by id; only the risk fields are used) has one.
+// The ship's own track (`own_id`) and tracks with a non-finite position or velocity are left out. A
+// track no assessment covers (a new track, the start of a run) is left out while the risk picture is
+// alive (`risk_alive`); once it has gone silent (riskBlindPlanning) every track is kept, risk-blind:
+// no encounter, no role.
+std::vector<PlannerTarget> selectPlannerTargets(const std::string& own_id, const std::vector<ShipState>& tracks,
+                                                const std::map<std::string, PlannerTarget>& assessed,
+                                                bool risk_alive);
 
 class PlanFollower {
 public:

@@ -40,7 +40,9 @@ struct StaticObstacle {
 struct OwnShipLimits {
   double max_speed = 10.0;   // [m/s]
   double min_speed = 0.0;    // [m/s]
-  double turn_rate = 0.02;   // [rad/s] omega of Lazarowska eq. (6): steady rate of turn
+  // [rad/s] omega of Lazarowska (2015) eq. (6), the steady rate of turn. The paper measures it in
+  // turning trials and gives no value: 1 deg/s is our choice, a moderate rate for a small vessel.
+  double turn_rate = 0.0175;
   double turn_delay = 10.0;  // [s] t01 of eq. (6): time before the turn starts
 };
 

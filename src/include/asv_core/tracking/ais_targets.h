@@ -76,12 +76,15 @@ private:
 // remaining nanoseconds), so that ages match what a node computes from ros::Time.
 double spanSeconds(std::int64_t ns);
 
-template <class F>
-void AisTargetTable::due(std::int64_t now_ns, F f) {
-  for (auto it = ships_.begin(); it != ships_.end();) {
+// The due() of a target table: forgets the entries of `targets` (each with stamp_ns and updated) not
+// heard for forget_after [s] at now_ns, then calls f(target, age [s]) for each entry updated since
+// the last call, in the map's order, and clears its flag.
+template <class Map, class F>
+void dueTargets(Map& targets, std::int64_t now_ns, double forget_after, F f) {
+  for (auto it = targets.begin(); it != targets.end();) {
     const double age = spanSeconds(now_ns - it->second.stamp_ns);
-    if (age > cfg_.forget_after) {
-      it = ships_.erase(it);
+    if (age > forget_after) {
+      it = targets.erase(it);
       continue;
     }
     if (it->second.updated) {
@@ -90,6 +93,11 @@ void AisTargetTable::due(std::int64_t now_ns, F f) {
     }
     ++it;
   }
+}
+
+template <class F>
+void AisTargetTable::due(std::int64_t now_ns, F f) {
+  dueTargets(ships_, now_ns, cfg_.forget_after, f);
 }
 
 }  // namespace asv

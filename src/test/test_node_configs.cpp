@@ -1,0 +1,134 @@
+// Each node's Config struct against the YAML file that documents its parameters: every key of the file
+// is read by the struct's fromParams() (a key the code does not know would stop the node), the file's
+// values pass validate(), and the values a user sees in the file are the code's defaults where the
+// file says so. Bad values and wrong types are refused with the parameter's name.
+#include <gtest/gtest.h>
+
+#include <yaml-cpp/yaml.h>
+
+#include "asv_core/eval/evaluator_node_config.h"
+#include "asv_core/planning/planner_node_config.h"
+#include "asv_core/risk/risk_node_config.h"
+#include "asv_core/sim/sim_node_config.h"
+#include "asv_core/tracking/ingestion_config.h"
+#include "asv_core/tracking/tracker_node_config.h"
+
+using asv::ParamMap;
+
+namespace {
+
+void flatten(const YAML::Node& n, const std::string& key, ParamMap& out) {
+  if (n.IsMap()) {
+    for (const auto& kv : n)
+      flatten(kv.second, key.empty() ? kv.first.as<std::string>() : key + "/" + kv.first.as<std::string>(), out);
+  } else if (n.IsSequence()) {
+    std::vector<std::string> items;
+    for (const auto& i : n)
+      items.push_back(i.as<std::string>());
+    out.setList(key, items);
+  } else if (n.IsScalar()) {
+    out.set(key, n.as<std::string>());
+  }
+}
+
+ParamMap loadYaml(const std::string& relative) {
+  ParamMap p;
+  flatten(YAML::LoadFile(std::string(ASV_SOURCE_DIR) + "/" + relative), "", p);
+  p.setLabel("/node/");
+  return p;
+}
+
+std::string unknown(const ParamMap& p, const std::vector<std::string>& skip = {}) {
+  std::string s;
+  for (const auto& k : p.unknownKeys(skip))
+    s += k + " ";
+  return s;
+}
+
+}  // namespace
+
+TEST(NodeConfigs, PlannerNodeYamlIsTheCodesKeySetAndDefaults) {
+  ParamMap y = loadYaml("asv_planning/config/planner_node.yaml");
+  const auto c = asv::PlannerNodeConfig::fromParams(y);
+  EXPECT_EQ(unknown(y), "");
+  // One definition of the rate of turn: the YAML's 1 deg/s is the core's default for every caller.
+  EXPECT_DOUBLE_EQ(c.follower.limits.turn_rate, 0.0175);
+  EXPECT_DOUBLE_EQ(asv::OwnShipLimits{}.turn_rate, 0.0175);
+  EXPECT_DOUBLE_EQ(asv::PlanFollowerConfig{}.limits.turn_rate, 0.0175);
+  EXPECT_DOUBLE_EQ(c.follower.replan_period, asv::PlanFollowerConfig{}.replan_period);
+  EXPECT_DOUBLE_EQ(c.stale_after, asv::PlannerNodeConfig{}.stale_after);
+  EXPECT_FALSE(c.has_goal);  // goal_x/goal_y are commented out
+}
+
+TEST(NodeConfigs, PlannerNodeGoalNeedsBothCoordinates) {
+  ParamMap p(std::map<std::string, std::string>{{"goal_x", "100"}});
+  EXPECT_THROW(asv::PlannerNodeConfig::fromParams(p), std::invalid_argument);
+  p.set("goal_y", "-50");
+  const auto c = asv::PlannerNodeConfig::fromParams(p);
+  EXPECT_TRUE(c.has_goal);
+  EXPECT_DOUBLE_EQ(c.goal.y(), -50.0);
+}
+
+TEST(NodeConfigs, RiskNodeYamlIsTheCodesKeySet) {
+  ParamMap y = loadYaml("asv_risk/config/risk_node.yaml");
+  const auto c = asv::RiskNodeConfig::fromParams(y);
+  EXPECT_EQ(unknown(y), "");
+  EXPECT_DOUBLE_EQ(c.stale_after, asv::RiskNodeConfig{}.stale_after);
+}
+
+TEST(NodeConfigs, TrackerYamlIsTheCodesKeySet) {
+  ParamMap y = loadYaml("asv_risk/config/tracker.yaml");
+  const auto c = asv::TrackerNodeConfig::fromParams(y);
+  EXPECT_EQ(unknown(y), "");
+  EXPECT_DOUBLE_EQ(c.tracker.arpa.drop_after, asv::TrackerConfig{}.arpa.drop_after);
+}
+
+TEST(NodeConfigs, IngestionYamlsAreTheCodesKeySets) {
+  ParamMap ais = loadYaml("asv_risk/config/ais_node.yaml");
+  const auto a = asv::AisNodeConfig::fromParams(ais);
+  EXPECT_EQ(unknown(ais, {"input/"}), "");  // input/ is the node's I/O glue
+  EXPECT_EQ(a.targets.max_targets, 5000u);  // the AIS table's own defaults, not the radar's
+  EXPECT_DOUBLE_EQ(a.targets.forget_after, 900.0);
+  ParamMap arpa = loadYaml("asv_risk/config/arpa_node.yaml");
+  const auto r = asv::ArpaNodeConfig::fromParams(arpa);
+  EXPECT_EQ(unknown(arpa, {"input/"}), "");
+  EXPECT_EQ(r.targets.max_targets, 1000u);
+  EXPECT_DOUBLE_EQ(r.targets.forget_after, 120.0);
+}
+
+TEST(NodeConfigs, IngestionNeedsAnOrigin) {
+  EXPECT_THROW(asv::AisNodeConfig::fromParams(ParamMap()), std::invalid_argument);
+  EXPECT_THROW(asv::AisNodeConfig::fromParams(ParamMap(std::map<std::string, std::string>{{"origin_lat_deg", "54.6"}})), std::invalid_argument);
+  EXPECT_NO_THROW(asv::ArpaNodeConfig::fromParams(ParamMap(std::map<std::string, std::string>{{"origin_scenario", "head_on.yaml"}})));
+  EXPECT_THROW(asv::ArpaNodeConfig::fromParams(ParamMap({{"origin_lat_deg", "91"}, {"origin_lon_deg", "0"}})),
+               std::invalid_argument);
+}
+
+TEST(NodeConfigs, SimNodeYamlIsTheCodesKeySet) {
+  ParamMap y = loadYaml("asv_sim/config/sim_node.yaml");
+  y.set("scenario", "head_on.yaml");  // required, and not in the file
+  const auto c = asv::SimNodeConfig::fromParams(y);
+  EXPECT_EQ(unknown(y), "");
+  EXPECT_TRUE(c.lockstep_participants.empty());
+  EXPECT_THROW(asv::SimNodeConfig::fromParams(ParamMap()), std::invalid_argument);  // no scenario
+}
+
+TEST(NodeConfigs, EvaluatorNodeYamlIsTheCodesKeySet) {
+  ParamMap y = loadYaml("asv_sim/config/evaluator_node.yaml");
+  const auto c = asv::EvaluatorNodeConfig::fromParams(y);
+  EXPECT_EQ(unknown(y, {"evaluation/"}), "");  // the subtree is checked by EvaluationConfig
+  EXPECT_DOUBLE_EQ(c.time_origin, 1.0e9);  // sim_node's epoch (a YAML 1.1 "1.0e9" would be text)
+}
+
+TEST(NodeConfigs, TypedValuesAreRefusedWithTheParameterName) {
+  ParamMap p;
+  p.setLabel("/sim/");
+  p.set("scenario", "head_on.yaml", asv::ParamType::String);
+  p.set("rate", "fast", asv::ParamType::String);
+  try {
+    asv::SimNodeConfig::fromParams(p);
+    FAIL() << "a string as rate was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'/sim/rate' has the wrong type"), std::string::npos) << e.what();
+  }
+}
