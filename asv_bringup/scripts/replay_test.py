@@ -38,10 +38,19 @@ SIM_TIME = 900.0  # [s] the approach and the alteration (CPA at about 1050 s)
 # [s] Two 2 Hz series of random relative phase are at most 0.25 s apart; the keys round each stamp to
 # 0.1 s. A quarter second alone left out every other pair when the phases differed by about 0.25 s.
 PAIR_TOL = 0.35
+EPOCH = 1.0e9  # sim_node's ROS time of simulation time 0
+# [s] The first minute's young tracks are not compared: a track's first fixes depend on which AIS or
+# radar report the tracker heard first, which a free-running replay does not reproduce, and a young
+# track's DCPA swings by hundreds of metres (seen: 1194 m recorded, 888 m replayed at t = 22.5 s).
+SETTLE = 60.0
 
 
 def key(stamp):
     return round(stamp.to_sec(), 1)
+
+
+def settled(stamp_key):
+    return stamp_key - EPOCH >= SETTLE
 
 
 def nearest_pairs(recorded, stamps, tol=PAIR_TOL):
@@ -94,7 +103,7 @@ class RecordReplay(unittest.TestCase):
 
     def compare(self, replayed, by_mmsi=False, tol=PAIR_TOL):
         """Replayed assessments against the recorded ones at the same stamps; returns (pairs, compared)."""
-        pairs = nearest_pairs(self.recorded, replayed, tol)
+        pairs = [(k, kr) for k, kr in nearest_pairs(self.recorded, replayed, tol) if settled(k)]
         compared = same_level = 0
         for k, kr in pairs:
             ident = (lambda t: t.mmsi) if by_mmsi else (lambda t: t.target_id)
@@ -130,8 +139,9 @@ class RecordReplay(unittest.TestCase):
         self.assertEqual(rep.returncode, 0, rep.stdout.decode(errors="replace")[-3000:])
         pairs, compared = self.compare(replayed)
         # The replay starts when the bag does and ends with it: nearly every recorded stamp is there.
-        self.assertGreater(len(pairs), 0.8 * len(self.recorded),
-                           "%d of %d recorded assessments replayed" % (len(pairs), len(self.recorded)))
+        settled_recorded = [k for k in self.recorded if settled(k)]
+        self.assertGreater(len(pairs), 0.8 * len(settled_recorded),
+                           "%d of %d recorded assessments replayed" % (len(pairs), len(settled_recorded)))
         self.assertGreater(compared, 100)
 
     def test_looped_replay_resets_state(self):
@@ -186,7 +196,7 @@ class RecordReplay(unittest.TestCase):
         # After the reset the tracker's 2 Hz timer runs in a new phase: PAIR_TOL pairs every stamp.
         pairs, compared = self.compare(after, by_mmsi=True)
         lo, hi = min(after), max(after)
-        span = [k for k in self.recorded if lo <= k <= hi]
+        span = [k for k in self.recorded if lo <= k <= hi and settled(k)]
         # Throughput varies with the machine's load; the picture, not the count, is what the reset protects.
         self.assertGreater(len(pairs), 0.5 * len(span), "%d of %d recorded assessments replayed after the loop" %
                            (len(pairs), len(span)))
