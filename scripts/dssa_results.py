@@ -70,7 +70,7 @@ def summarise(runs):
         ships = r["ships"]
         sep = min(s["min_separation_m"] for s in ships if s["min_separation_m"] is not None)
         min_sep = min(min_sep, sep)
-        collided = r["collision"] or sep < COLLISION_DISTANCE
+        collided = r["collision"] or r["collisions_between_targets"] > 0 or sep < COLLISION_DISTANCE
         collisions += collided
         if not collided and all(s["arrived"] for s in ships):
             ok.append(r)

@@ -60,22 +60,23 @@ def fmt(v, f="%.0f"):
     return "-" if v is None else f % v
 out = ["# asv_batch evaluation", "",
        "%d runs, %s seeds per scenario/planner (scripts/eval.sh; format and scores: docs/evaluation.md)." % (len(rows), sys.argv[3]), "",
-       "| scenario | planner | runs | collisions | safety violations | arrived | min separation m (worst / mean) | COLREGs score (mean / worst) | path ratio (mean) | plan time ms (median / max) |",
-       "|---|---|---|---|---|---|---|---|---|---|"]
+       "| scenario | planner | runs | collisions | groundings | safety violations | arrived | min separation m (worst / mean) | COLREGs score (mean / worst) | path ratio (mean) | plan time ms (median / max) |",
+       "|---|---|---|---|---|---|---|---|---|---|---|"]
 for (s, p), rs in groups.items():
     seps = [r["min_separation_m"] for r in rs if r["min_separation_m"] is not None]
     sc = [r["colregs_score"] for r in rs]
     pr = [r["path_ratio"] for r in rs if r["path_ratio"] is not None]
     med = [r["plan_time_ms"]["median"] for r in rs if r["plan_time_ms"]["median"] is not None]
     mx = [r["plan_time_ms"]["max"] for r in rs if r["plan_time_ms"]["max"] is not None]
-    out.append("| %s | %s | %d | %d | %d | %d | %s / %s | %.2f / %.2f | %s | %s / %s |" % (
-        s, p, len(rs), sum(r["collision"] for r in rs), sum(r["safety_violation"] for r in rs),
+    out.append("| %s | %s | %d | %d | %d | %d | %d | %s / %s | %.2f / %.2f | %s | %s / %s |" % (
+        s, p, len(rs), sum(r["collision"] for r in rs), sum(r["grounding"] for r in rs), sum(r["safety_violation"] for r in rs),
         sum(r["arrived"] for r in rs), fmt(min(seps) if seps else None), fmt(statistics.mean(seps) if seps else None),
         statistics.mean(sc), min(sc), fmt(statistics.mean(pr) if pr else None, "%.3f"),
         fmt(statistics.median(med) if med else None, "%.1f"), fmt(max(mx) if mx else None, "%.1f")))
 out += ["", "## Totals", ""]
-out.append("- runs: %d, collisions: %d, safety violations: %d, arrived: %d" % (
-    len(rows), sum(r["collision"] for r in rows), sum(r["safety_violation"] for r in rows), sum(r["arrived"] for r in rows)))
+out.append("- runs: %d, collisions: %d, groundings: %d, safety violations: %d, arrived: %d" % (
+    len(rows), sum(r["collision"] for r in rows), sum(r["grounding"] for r in rows),
+    sum(r["safety_violation"] for r in rows), sum(r["arrived"] for r in rows)))
 if rows:
     out.append("- mean COLREGs score: %.3f" % statistics.mean(r["colregs_score"] for r in rows))
 out += ["", "## COLREGs notes (first seed of each pair)", ""]

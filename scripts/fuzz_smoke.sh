@@ -33,7 +33,8 @@ declare -A targets=(
   [fuzz_nmea]="src/fuzz/fuzz_nmea.cpp src/lib/codec/nmea.cpp src/lib/codec/ais.cpp src/lib/codec/arpa.cpp"
   [fuzz_arpa]="src/fuzz/fuzz_arpa.cpp src/lib/codec/nmea.cpp src/lib/codec/arpa.cpp"
   [fuzz_scenario]="src/fuzz/fuzz_scenario.cpp src/lib/sim/scenario.cpp src/lib/common/geodesy.cpp
-                   src/lib/common/param_map.cpp src/lib/risk/domain.cpp -lyaml-cpp -lGeographicLib"
+                   src/lib/common/param_map.cpp src/lib/common/geometry.cpp src/lib/risk/domain.cpp
+                   -lyaml-cpp -lGeographicLib"
 )
 # Seed corpus of each target (copied at run time, so nothing is duplicated in the repository).
 seed() {  # name corpus_dir

@@ -18,7 +18,8 @@ import rospkg
 import rosunit
 
 SIM_TIME = float(os.environ.get("ASV_SMOKE_SIM_TIME", "20"))
-KEYS = ["scenario", "planner", "seed", "collision", "min_separation_m", "safety_violation", "arrived",
+KEYS = ["scenario", "planner", "seed", "collision", "collisions_between_targets", "grounding",
+        "min_obstacle_distance_m", "min_separation_m", "safety_violation", "arrived",
         "path_length_m", "targets", "colregs_score", "plan_time_ms", "wall_time_s"]
 
 

@@ -109,6 +109,8 @@ asv::ParamMap PlannerNode::applyScenario() {
     p.follower.cruise_speed = ship->speed;
   if (p.follower.min_separation <= 0.0)
     p.follower.min_separation = sc.min_separation;  // the scenario's safety.min_separation_m
+  if (sc.min_obstacle_clearance > 0.0)
+    p.follower.min_obstacle_clearance_m = sc.min_obstacle_clearance;  // the waters' own (a port)
   if (p.planner.empty())
     p.planner = ship->planner;
   return sc.planner_params.sub(p.planner);
@@ -226,7 +228,7 @@ void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerT
   asv::Plan plan;
   try {
     plan =
-        asv::planObservingGiveWay([this](const asv::PlanningProblem& p) { return plugin_->makePlan(p); }, pr);
+        asv::planUnderSharedRules([this](const asv::PlanningProblem& p) { return plugin_->makePlan(p); }, pr);
   } catch (const std::exception& e) {
     ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), e.what());
     plan = follower_->fallback(targets, std::string("plugin error: ") + e.what());

@@ -313,6 +313,8 @@ void BatchRun::addPluginShips(asv_planning::PluginLoader& loader) {
     fc.seed = static_cast<int>(seed_);
     fc.cruise_speed = vs[i].cruise_speed;
     fc.min_separation = sc_.min_separation;
+    if (sc_.min_obstacle_clearance > 0.0)
+      fc.min_obstacle_clearance_m = sc_.min_obstacle_clearance;  // the waters' own (a port)
     auto ps = std::make_unique<PluginShip>(PluginShip{i, p, loader.load(p, sc_.planner_params.sub(p)),
                                                       asv::PlanFollower(fc), asv::RiskAssessor()});
     if (vs[i].goal)
@@ -368,6 +370,7 @@ void BatchRun::sample() {
     s.state = v.shipState();
     s.course_setpoint = v.course_sp;
     s.active = !v.arrived;
+    s.beam = v.beam;
     ss.push_back(std::move(s));
   }
   rec_.addSample(sim_.time(), ss);
@@ -387,7 +390,7 @@ void BatchRun::planPluginShip(PluginShip& ps, double now) {
     const auto t0 = std::chrono::steady_clock::now();
     asv::Plan plan;
     try {
-      plan = asv::planObservingGiveWay([&](const asv::PlanningProblem& p) { return ps.plugin->makePlan(p); },
+      plan = asv::planUnderSharedRules([&](const asv::PlanningProblem& p) { return ps.plugin->makePlan(p); },
                                        pr);
     } catch (const std::exception& e) {
       plan = ps.follower.fallback(targets, std::string("plugin error: ") + e.what());

@@ -18,6 +18,8 @@ asv::SimEvent::Type toCore(uint8_t type) {
       return asv::SimEvent::Collision;
     case asv_msgs::SimEvent::NEAR_MISS:
       return asv::SimEvent::NearMiss;
+    case asv_msgs::SimEvent::GROUNDING:
+      return asv::SimEvent::Grounding;
     default:
       return asv::SimEvent::Arrival;
   }
@@ -100,6 +102,7 @@ void EvaluatorNode::shipsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
     s.state.speed = t.speed_over_ground;
     s.state.heading = t.has_heading ? t.heading : t.course_over_ground;
     s.state.length = t.length;
+    s.beam = t.beam;
     s.active = !arrived_.count(t.id);
     ships.push_back(s);
   }

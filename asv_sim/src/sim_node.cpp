@@ -27,6 +27,20 @@ namespace asv_sim {
 
 namespace {
 
+uint8_t toMsgType(asv::SimEvent::Type t) {
+  switch (t) {
+    case asv::SimEvent::Collision:
+      return asv_msgs::SimEvent::COLLISION;
+    case asv::SimEvent::NearMiss:
+      return asv_msgs::SimEvent::NEAR_MISS;
+    case asv::SimEvent::Grounding:
+      return asv_msgs::SimEvent::GROUNDING;
+    case asv::SimEvent::Arrival:
+      break;
+  }
+  return asv_msgs::SimEvent::ARRIVAL;
+}
+
 // Stamps are sim time on a fixed epoch, so that two runs of the same scenario record the same stamps.
 constexpr double kEpoch = 1.0e9;  // [s] ROS time of simulation time 0
 
@@ -50,6 +64,8 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
   ships_pub_ = nh_.advertise<asv_msgs::TargetArray>("sim/ships", 10);
   events_pub_ = nh_.advertise<asv_msgs::SimEvent>("sim/events", 100, true);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("sim/markers", 2);
+  land_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("sim/land", 1, true);
+  publishLand();
   for (const auto& v : sim_->vessels()) {
     odom_pubs_.push_back(nh_.advertise<nav_msgs::Odometry>(v.name + "/odom", 50));
     if (v.own || v.behaviour == asv::Behaviour::Planner) {
@@ -245,15 +261,43 @@ void SimNode::publishState(bool odom, bool ships) {
   }
 }
 
+// The scenario's static obstacles, filled (latched: rviz draws them whenever it joins).
+void SimNode::publishLand() {
+  visualization_msgs::MarkerArray arr;
+  int id = 0;
+  for (const auto& o : sim_->scenario().obstacles) {
+    visualization_msgs::Marker m;
+    m.header.frame_id = "map";
+    m.header.stamp = ros::Time(kEpoch);
+    m.ns = "land";
+    m.id = id++;
+    m.type = visualization_msgs::Marker::TRIANGLE_LIST;
+    m.pose.orientation.w = 1.0;
+    m.scale.x = m.scale.y = m.scale.z = 1.0;
+    m.color.r = 0.76f;  // sand
+    m.color.g = 0.70f;
+    m.color.b = 0.50f;
+    m.color.a = 0.9f;
+    for (const auto& t : asv::triangulate(o.polygon))
+      for (int k : t) {
+        geometry_msgs::Point p;
+        p.x = o.polygon[k].x();
+        p.y = o.polygon[k].y();
+        m.points.push_back(p);
+      }
+    if (!m.points.empty())
+      arr.markers.push_back(m);
+  }
+  land_pub_.publish(arr);
+}
+
 void SimNode::publishEvents(size_t from) {
   const auto& ev = sim_->events();
   for (size_t i = from; i < ev.size(); ++i) {
     asv_msgs::SimEvent m;
     m.header.stamp = ros::Time(kEpoch + ev[i].time);
     m.header.frame_id = "map";
-    m.type = ev[i].type == asv::SimEvent::Collision  ? asv_msgs::SimEvent::COLLISION
-             : ev[i].type == asv::SimEvent::NearMiss ? asv_msgs::SimEvent::NEAR_MISS
-                                                     : asv_msgs::SimEvent::ARRIVAL;
+    m.type = toMsgType(ev[i].type);
     m.ship_a = ev[i].a;
     m.ship_b = ev[i].b;
     m.distance = ev[i].distance;
@@ -262,6 +306,8 @@ void SimNode::publishEvents(size_t from) {
     if (ev[i].type == asv::SimEvent::Collision)
       ROS_ERROR("sim_node: COLLISION between %s and %s at t = %.1f s", ev[i].a.c_str(), ev[i].b.c_str(),
                 ev[i].time);
+    else if (ev[i].type == asv::SimEvent::Grounding)
+      ROS_ERROR("sim_node: GROUNDING of %s on %s at t = %.1f s", ev[i].a.c_str(), ev[i].b.c_str(), ev[i].time);
     else
       ROS_INFO("sim_node: %s %s %s at t = %.1f s (%.0f m)", asv::toString(ev[i].type), ev[i].a.c_str(),
                ev[i].b.c_str(), ev[i].time, ev[i].distance);
@@ -286,6 +332,8 @@ void SimNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("min separation own [m]", sim_->minSeparationOwn());
   if (sim_->collided())
     stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "collision");
+  else if (sim_->grounded())
+    stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "grounding");
   else if (lockstep_timeouts_ > 0)
     stat.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "a lockstep participant did not answer in time");
   else if (lockstep_rejected_ > 0)
@@ -333,7 +381,7 @@ bool SimNode::publishNewEvents() {
     return false;
   publishEvents(events_done_);
   events_done_ = sim_->events().size();
-  return params_.stop_on_collision && sim_->collided();
+  return params_.stop_on_collision && (sim_->collided() || sim_->grounded());
 }
 
 int SimNode::runFreely() {
@@ -583,9 +631,9 @@ int SimNode::finishRun() {
   end.distance = sim_->minSeparationOwn();
   events_pub_.publish(end);
   lockstep_.published(events_pub_.getTopic());
-  ROS_INFO("sim_node: scenario '%s' ended at t = %.1f s: %s, min separation %.0f m, real-time factor %.1f",
+  ROS_INFO("sim_node: scenario '%s' ended at t = %.1f s: %s%s, min separation %.0f m, real-time factor %.1f",
            sim_->scenario().name.c_str(), sim_->time(), sim_->collided() ? "COLLISION" : "no collision",
-           sim_->minSeparationOwn(), achieved_rtf_);
+           sim_->grounded() ? ", GROUNDING" : "", sim_->minSeparationOwn(), achieved_rtf_);
   // The evaluator takes the END event in one more step; it writes its result and leaves (below) without
   // answering.
   if (params_.lockstep)

@@ -86,7 +86,8 @@ TEST(AsvBatch, PlannerAvoidsArrivesAndWritesEveryKey) {
         "safety_violation", "arrived",      "time_to_goal_s", "path_length_m",   "path_ratio",
         "manoeuvres",       "targets",      "colregs_score",  "plan_time_ms",    "wall_time_s",
         "encounter",        "own_role",     "min_distance_m", "tcpa_at_start_s", "dcpa_at_start_m",
-        "colregs_ok",       "colregs_notes"})
+        "colregs_ok",       "colregs_notes",  "collisions_between_targets", "grounding",
+        "min_obstacle_distance_m"})
     EXPECT_NE(o.out.find(std::string("\"") + key + "\": "), std::string::npos) << key;
   EXPECT_NE(o.out.find("\"scenario\": \"batch_crossing\", \"planner\": \"ga\""), std::string::npos);
   EXPECT_FALSE(flag(o.out, "collision"));
@@ -130,6 +131,7 @@ TEST(AsvBatch, DssaPaperSixteenShipsAllArriveWithoutCollision) {
     ++lines;
     EXPECT_EQ(line.find("\"arrived\": false"), std::string::npos) << "seed " << lines;
     EXPECT_FALSE(flag(line, "collision")) << "seed " << lines;
+    EXPECT_NE(line.find("\"collisions_between_targets\": 0,"), std::string::npos) << "seed " << lines;
     const std::regex sep("\"min_separation_m\": ([0-9.]+)");
     int ships = 0;
     for (std::sregex_iterator it(line.begin(), line.end(), sep), e; it != e; ++it, ++ships)
@@ -146,4 +148,22 @@ TEST(AsvBatch, DssaPaperSixteenShipsAllArriveWithoutCollision) {
   // --set is checked: a malformed one and an unknown key are usage errors.
   EXPECT_EQ(run("--scenario " + sc + " --set dssa_plus").status, 2);
   EXPECT_EQ(run("--scenario " + sc + " --set dssa_plus.no_such_key=1 --quiet").status, 2);
+}
+
+// Land is a hazard for every planner: with no traffic at all, the straight way to the goal crosses an
+// island. Without a planner the ship runs aground (and the result says so); every planner goes round.
+TEST(AsvBatch, EveryPlannerGoesRoundAnIslandAndNoneRunsAground) {
+  const std::string island = std::string(ASV_SIM_TEST_DIR) + "/../../asv_bringup/scenarios/island.yaml";
+  const Output none = run("--scenario " + island + " --planner none --seed 1");
+  ASSERT_EQ(none.status, 0) << none.out;
+  EXPECT_TRUE(flag(none.out, "grounding")) << none.out;
+  EXPECT_DOUBLE_EQ(number(none.out, "min_obstacle_distance_m"), 0.0);
+  EXPECT_DOUBLE_EQ(number(none.out, "colregs_score"), 0.0);
+  for (const char* planner : {"aco", "mopso", "ga", "dssa", "dssa_plus"}) {
+    const Output o = run("--scenario " + island + " --planner " + planner + " --seed 1");
+    ASSERT_EQ(o.status, 0) << planner << ": " << o.out;
+    EXPECT_FALSE(flag(o.out, "grounding")) << planner << ": " << o.out;
+    EXPECT_TRUE(flag(o.out, "arrived")) << planner << ": " << o.out;
+    EXPECT_GT(number(o.out, "min_obstacle_distance_m"), 90.0) << planner << ": " << o.out;
+  }
 }

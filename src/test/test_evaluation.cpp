@@ -233,6 +233,75 @@ TEST(Evaluation, CollisionScoresZero) {
   EXPECT_TRUE(r.safety_violation);
 }
 
+// The own ship (100 x 20 m) sails north from the origin at 5 m/s past an island whose west shore is
+// at x = 300 for y in [500, 1500]: its starboard side passes 290 m off.
+TEST(Evaluation, DistanceToLandIsMeasuredFromTheHull) {
+  RunInfo info;
+  info.scenario = "land";
+  info.ships = {{"own", std::nullopt, ""}};
+  info.obstacles = {{{300, 500}, {1300, 500}, {1300, 1500}, {300, 1500}}};
+  RunRecorder rec({}, info);
+  for (int k = 0; k <= 600; ++k) {
+    ShipSample own;
+    own.name = "own";
+    own.state.position = {0.0, 5.0 * k};
+    own.state.speed = 5.0;
+    own.state.length = 100.0;
+    own.beam = 20.0;
+    rec.addSample(k, {own});
+  }
+  const RunResult r = rec.finish();
+  EXPECT_FALSE(r.own.grounding);
+  EXPECT_NEAR(r.own.min_obstacle_distance, 290.0, 1e-9);
+  EXPECT_DOUBLE_EQ(r.own.colregs_score, 1.0);
+  EXPECT_NE(toJson(r).find("\"grounding\": false, \"min_obstacle_distance_m\": 290.0"), std::string::npos);
+}
+
+TEST(Evaluation, GroundingScoresZeroLikeACollision) {
+  RunInfo info;
+  info.scenario = "land";
+  info.ships = {{"own", std::nullopt, ""}};
+  info.obstacles = {{{-500, 500}, {500, 500}, {500, 1500}, {-500, 1500}}};
+  RunRecorder rec({}, info);
+  ShipSample own;
+  own.name = "own";
+  own.state.position = {0.0, 1000.0};  // in the middle of the island
+  own.state.length = 100.0;
+  rec.addSample(0.0, {own});
+  const RunResult r = rec.finish();
+  EXPECT_TRUE(r.own.grounding);
+  EXPECT_DOUBLE_EQ(r.own.min_obstacle_distance, 0.0);
+  EXPECT_DOUBLE_EQ(r.own.colregs_score, 0.0);
+  EXPECT_FALSE(r.collision);
+  // The simulator's event alone (a contact between two samples) is a grounding too.
+  RunInfo open = info;
+  open.obstacles.clear();
+  RunRecorder ev({}, open);
+  own.state.position = {0.0, 0.0};
+  ev.addSample(0.0, {own});
+  ev.addEvent({SimEvent::Grounding, 0.5, "own", "island", 0.0});
+  EXPECT_TRUE(ev.finish().own.grounding);
+}
+
+TEST(Evaluation, CollisionIsTheOwnShipsAndTargetsCollisionsAreCounted) {
+  RunInfo info;
+  info.scenario = "c";
+  info.ships = {{"own", std::nullopt, ""}, {"a", std::nullopt, ""}, {"b", std::nullopt, ""}};
+  RunRecorder rec({}, info);
+  ShipSample own, a, b;
+  own.name = "own";
+  a.name = "a";
+  a.state.position = {5000.0, 0.0};
+  b.name = "b";
+  b.state.position = {5000.0, 10.0};
+  rec.addSample(0.0, {own, a, b});
+  rec.addEvent({SimEvent::Collision, 0.0, "a", "b", 10.0});
+  const RunResult r = rec.finish();
+  EXPECT_FALSE(r.collision);  // two other ships touched: not the own ship's collision
+  EXPECT_EQ(r.collisions_between_targets, 1);
+  EXPECT_NE(toJson(r).find("\"collision\": false, \"collisions_between_targets\": 1"), std::string::npos);
+}
+
 TEST(Evaluation, ManoeuvresAreConsolidatedOverTheWindow) {
   RunInfo info;
   info.scenario = "m";
@@ -269,6 +338,8 @@ TEST(Evaluation, JsonIsDeterministicWithFixedKeysAndNullForUnknowns) {
   EXPECT_EQ(
       ja.rfind("{\"scenario\": \"scripted\", \"planner\": \"test\", \"seed\": 7, \"collision\": false, ", 0),
       0u);
+  // No obstacles: no grounding, and no distance to land.
+  EXPECT_NE(ja.find("\"grounding\": false, \"min_obstacle_distance_m\": null"), std::string::npos);
   // No goal, not arrived: time_to_goal_s and path_ratio are null, never NaN.
   EXPECT_NE(ja.find("\"arrived\": false, \"time_to_goal_s\": null"), std::string::npos);
   EXPECT_NE(ja.find("\"path_ratio\": null"), std::string::npos);
@@ -279,7 +350,8 @@ TEST(Evaluation, JsonIsDeterministicWithFixedKeysAndNullForUnknowns) {
             std::string::npos);
   // Key order of the whole object (docs/evaluation.md).
   size_t pos = 0;
-  for (const char* key : {"scenario", "planner", "seed", "collision", "min_separation_m", "safety_violation",
+  for (const char* key : {"scenario", "planner", "seed", "collision", "collisions_between_targets", "grounding",
+                          "min_obstacle_distance_m", "min_separation_m", "safety_violation",
                           "arrived", "time_to_goal_s", "path_length_m", "path_ratio", "manoeuvres", "targets",
                           "colregs_score", "plan_time_ms", "wall_time_s"}) {
     const size_t at = ja.find(std::string("\"") + key + "\":", pos);

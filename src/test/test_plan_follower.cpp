@@ -6,6 +6,7 @@
 
 #include "asv_core/common/units.h"
 #include "asv_core/planning/dssa/dssa.h"
+#include "asv_core/planning/land_route.h"
 #include "asv_core/planning/plan_follower.h"
 
 namespace {
@@ -131,7 +132,7 @@ TEST(DssaColregs, GiveWayInHeadOnSearchesStarboardOnly) {
 
 // Rules 14/15 guard: a fake planner that alters 20 deg to port on its first seed and 20 deg to
 // starboard on any other.
-TEST(PlanObservingGiveWay, RetriesAPortPlanWhenGivingWay) {
+TEST(PlanUnderSharedRules, RetriesAPortPlanWhenGivingWay) {
   asv::PlanningProblem pr;
   pr.own = own();
   pr.seed = 7;
@@ -144,7 +145,7 @@ TEST(PlanObservingGiveWay, RetriesAPortPlanWhenGivingWay) {
     return plan;
   };
   // No head-on or crossing give-way target: the plan stands, whatever its side.
-  asv::Plan p = asv::planObservingGiveWay(fake, pr);
+  asv::Plan p = asv::planUnderSharedRules(fake, pr);
   EXPECT_EQ(calls, 1);
   EXPECT_TRUE(asv::firstAlterationToPort(p, pr));
   // Head-on: the port plan is refused and the retry's starboard plan taken.
@@ -153,13 +154,13 @@ TEST(PlanObservingGiveWay, RetriesAPortPlanWhenGivingWay) {
   t.encounter = asv::Encounter::HeadOn;
   pr.targets = {t};
   calls = 0;
-  p = asv::planObservingGiveWay(fake, pr);
+  p = asv::planUnderSharedRules(fake, pr);
   EXPECT_EQ(calls, 2);
   EXPECT_NEAR(std::remainder(p.course_setpoint - pr.own.course, 2 * asv::kPi), asv::degToRad(20.0), 1e-12);
   EXPECT_NE(p.message.find("retry 1"), std::string::npos);
   // A planner that only knows port: after 3 retries the first plan is kept, and says so.
   calls = 0;
-  p = asv::planObservingGiveWay(
+  p = asv::planUnderSharedRules(
       [&](const asv::PlanningProblem& q) {
         ++calls;
         asv::Plan plan;
@@ -170,6 +171,100 @@ TEST(PlanObservingGiveWay, RetriesAPortPlanWhenGivingWay) {
       pr);
   EXPECT_EQ(calls, 4);
   EXPECT_NE(p.message.find("port alteration kept"), std::string::npos);
+}
+
+namespace {
+// A 2 km square island whose south shore lies 1 km ahead of the own ship (at the origin, heading north).
+asv::StaticObstacle island() {
+  return {"island", {{-1000.0, 1000.0}, {1000.0, 1000.0}, {1000.0, 3000.0}, {-1000.0, 3000.0}}};
+}
+asv::Plan waypointPlan(const std::vector<Eigen::Vector2d>& points) {
+  asv::Plan plan;
+  plan.status = asv::PlanStatus::Ok;
+  for (const auto& p : points)
+    plan.waypoints.push_back({p, 0.0, 0.0, 5.0});
+  plan.course_setpoint = 0.0;
+  plan.speed_setpoint = 5.0;
+  return plan;
+}
+}  // namespace
+
+// Land is a rule of every plan: a fake planner goes straight through the island on its first seed and
+// round its west side (1300 m clear of the west shore's x = -1000, via x = -1500) on any other.
+TEST(PlanUnderSharedRules, APlanOverLandIsRefusedAndReplanned) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.seed = 7;
+  pr.obstacles = {island()};
+  pr.min_obstacle_clearance = 185.2;
+  int calls = 0;
+  auto fake = [&](const asv::PlanningProblem& p) {
+    ++calls;
+    return p.seed == 7 ? waypointPlan({{0, 0}, {0, 4000}})
+                       : waypointPlan({{0, 0}, {-1500, 900}, {-1500, 3100}, {0, 4000}});
+  };
+  asv::Plan p = asv::planUnderSharedRules(fake, pr);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(p.waypoints.size(), 4u);
+  EXPECT_NE(p.message.find("of land"), std::string::npos) << p.message;
+  // The detour's closest approach, by hand: the leg (0,0)-(-1500,900) passes the corner (-1000,1000) at
+  // |cross((-1500,900), (-1000,1000))| / |(-1500,900)| = 600000 / 1749.3 = 343.0 m.
+  EXPECT_NEAR(asv::trackObstacleDistance(asv::landTrack(p, pr.own.position, 1e5), pr.obstacles), 343.0, 0.1);
+  // A planner that only goes straight: no plan keeps clear, the result is NoSolution (the fallback).
+  calls = 0;
+  p = asv::planUnderSharedRules([&](const asv::PlanningProblem&) {
+    ++calls;
+    return waypointPlan({{0, 0}, {0, 4000}});
+  }, pr);
+  EXPECT_EQ(calls, 4);
+  EXPECT_EQ(p.status, asv::PlanStatus::NoSolution);
+  // Without a clearance requirement the straight plan stands.
+  pr.min_obstacle_clearance = 0.0;
+  calls = 0;
+  EXPECT_EQ(asv::planUnderSharedRules(fake, pr).waypoints.size(), 2u);
+}
+
+TEST(PlanUnderSharedRules, LandRequirementLetsAShipInsideTheClearanceMove) {
+  const std::vector<asv::StaticObstacle> land = {island()};
+  const Eigen::Vector2d far_goal(0.0, -10000.0);
+  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 0.0}, far_goal, land, 185.2), 185.2);  // 1 km off: the clearance
+  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 900.0}, far_goal, land, 185.2), 50.0);  // 100 m off: half
+  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 0.0}, {0.0, 960.0}, land, 185.2), 20.0);  // a berth 40 m off
+  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 900.0}, far_goal, {}, 185.2), 0.0);     // no land
+  // Land beyond the reach is a later plan's: 800 m of a northbound track stop short of the shore.
+  EXPECT_DOUBLE_EQ(asv::trackObstacleDistance(asv::truncateTrack({{0, 0}, {0, 4000}}, 800.0), land), 200.0);
+  // A course-only plan is judged over its reach (speed x horizon, here 6 km): north, over the island.
+  asv::Plan course_only;
+  course_only.status = asv::PlanStatus::Ok;
+  course_only.course_setpoint = 0.0;
+  course_only.speed_setpoint = 5.0;
+  EXPECT_DOUBLE_EQ(asv::trackObstacleDistance(asv::landTrack(course_only, {0.0, 0.0}, 6000.0), land), 0.0);
+  course_only.course_setpoint = asv::kPi;  // south: away from it
+  EXPECT_DOUBLE_EQ(asv::trackObstacleDistance(asv::landTrack(course_only, {0.0, 0.0}, 6000.0), land), 1000.0);
+}
+
+TEST(PlanFollower, FallbackStopsRatherThanRunAground) {
+  asv::PlanFollower f;
+  f.setObstacles({island()});
+  f.updateOwn(own());  // heading north at 6 m/s: the island 1 km ahead
+  const asv::Plan fb = f.fallback({}, "test");
+  EXPECT_EQ(fb.status, asv::PlanStatus::Fallback);
+  EXPECT_DOUBLE_EQ(fb.speed_setpoint, 0.0);
+  EXPECT_NE(fb.message.find("land ahead"), std::string::npos);
+  asv::PlanFollower open_sea;
+  open_sea.updateOwn(own());
+  EXPECT_DOUBLE_EQ(open_sea.fallback({}, "test").speed_setpoint, 3.0);  // half of 6 m/s: unchanged
+}
+
+TEST(PlanFollower, APlanInForceThatNowLeadsOntoLandIsReplanned) {
+  asv::PlanFollower f;
+  f.updateOwn(own());
+  f.acceptPlan(waypointPlan({{0, 0}, {0, 4000}}), 0.0, {}, "first");  // no land known yet
+  std::string why;
+  EXPECT_FALSE(f.replanNeeded(100.0, {}, why));
+  f.setObstacles({island()});  // e.g. a chart loaded: the plan in force crosses it
+  EXPECT_TRUE(f.replanNeeded(100.0, {}, why));
+  EXPECT_NE(why.find("of land"), std::string::npos);
 }
 
 // Issue: at start-up the tracks reached planner_node a moment before their first risk assessment, the
@@ -217,4 +312,59 @@ TEST(PlanFollower, PlannerTargetsFollowTheRiskPicture) {
   EXPECT_EQ(silent[1].state.id, "new");
   EXPECT_EQ(silent[1].role, asv::OwnRole::None);  // risk-blind
   EXPECT_EQ(silent[1].risk, asv::RiskLevel::None);
+}
+
+// The route round the 2 km island from the origin to (0, 4000): its corners pushed out 1.2 x 185.2 m
+// along the diagonals (222.2 m in x and y), e.g. (-1222.2, 777.8) and (-1222.2, 3222.2) on the west
+// side; length 2 x hypot(1222.2, 777.8) + 2444.4 = 5341.8 m (the east side is as long).
+TEST(LandRoute, ShortestWayRoundAnIslandKeepsTheClearance) {
+  const std::vector<asv::StaticObstacle> land = {island()};
+  const auto route = asv::landRoute({0.0, 0.0}, {0.0, 4000.0}, land, 185.2, 185.2);
+  ASSERT_TRUE(route.has_value());
+  ASSERT_EQ(route->size(), 2u);
+  EXPECT_NEAR(std::fabs((*route)[0].x()), 1222.2, 0.1);
+  EXPECT_NEAR((*route)[0].y(), 777.8, 0.1);
+  std::vector<Eigen::Vector2d> track{{0.0, 0.0}};
+  track.insert(track.end(), route->begin(), route->end());
+  track.push_back({0.0, 4000.0});
+  double length = 0.0;
+  for (size_t i = 1; i < track.size(); ++i)
+    length += (track[i] - track[i - 1]).norm();
+  EXPECT_NEAR(length, 5341.8, 0.5);
+  EXPECT_GE(asv::trackObstacleDistance(track, land), 185.2);
+  // Clear water: no points; a goal on the island: no route.
+  EXPECT_TRUE(asv::landRoute({0.0, 0.0}, {3000.0, 0.0}, land, 185.2, 185.2)->empty());
+  EXPECT_FALSE(asv::landRoute({0.0, 0.0}, {0.0, 2000.0}, land, 185.2, 185.2).has_value());
+}
+
+TEST(LandRoute, TheFollowersProblemCarriesTheRouteRoundLand) {
+  asv::PlanFollower f;
+  f.setObstacles({island()});
+  f.setGoal({0.0, 4000.0});
+  f.updateOwn(own());
+  const asv::PlanningProblem pr = f.buildProblem(0.0, {});
+  EXPECT_EQ(pr.route.size(), 2u);
+  EXPECT_DOUBLE_EQ(pr.min_obstacle_clearance, 185.2);
+  f.setGoal({3000.0, 0.0});  // clear water: no route
+  EXPECT_TRUE(f.buildProblem(0.0, {}).route.empty());
+}
+
+// A harbour entrance 400 m wide between two breakwaters (80 m thick, y = 0..80): the berth lies
+// inside, and the ship arrives from off the axis. The only way in keeps 200 m from both heads, through
+// the gap's middle (0, 40) or (0, 80)-(0, 0): not round the 2.4 km breakwater.
+TEST(LandRoute, ThroughAHarbourEntranceNotRoundTheBreakwater) {
+  const std::vector<asv::StaticObstacle> port = {
+      {"west", {{-2600, 0}, {-200, 0}, {-200, 80}, {-2600, 80}}},
+      {"east", {{200, 0}, {2600, 0}, {2600, 80}, {200, 80}}}};
+  const auto route = asv::landRoute({-500.0, 8000.0}, {0.0, -1500.0}, port, 185.2, 185.2);
+  ASSERT_TRUE(route.has_value());
+  ASSERT_FALSE(route->empty());
+  std::vector<Eigen::Vector2d> track{{-500.0, 8000.0}};
+  track.insert(track.end(), route->begin(), route->end());
+  track.push_back({0.0, -1500.0});
+  double length = 0.0;
+  for (size_t i = 1; i < track.size(); ++i)
+    length += (track[i] - track[i - 1]).norm();
+  EXPECT_LT(length, 9600.0);  // the straight 9513 m and a little, not a 5 km detour
+  EXPECT_GE(asv::trackObstacleDistance(track, port), 185.2);
 }

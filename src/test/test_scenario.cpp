@@ -163,3 +163,13 @@ TEST(ScenarioFuzzRegression, HostileValuesAreScenarioErrors) {
                     "test.yaml");
   EXPECT_EQ(deep.planner_params.getDouble("a/b/c/d/e/f/g/h", 0.0), 1.0);
 }
+
+TEST(Scenario, ObstacleClearanceOfTheWaters) {
+  EXPECT_DOUBLE_EQ(parseScenario(kGood).min_obstacle_clearance, 0.0);  // not given: the node's own
+  const Scenario s = parseScenario(replace(kGood, "safety: {min_separation_m: 926}",
+                                           "safety: {min_separation_m: 926, min_obstacle_clearance_m: 100}"));
+  EXPECT_DOUBLE_EQ(s.min_obstacle_clearance, 100.0);
+  EXPECT_DOUBLE_EQ(s.min_separation, 926.0);
+  expectError(replace(kGood, "safety: {min_separation_m: 926}", "safety: {min_obstacle_clearance_m: -5}"),
+              "must be > 0 m");
+}

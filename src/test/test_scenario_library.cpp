@@ -105,7 +105,8 @@ const std::vector<std::string> kExpected = {"lazarowska_1",
                                             "crossing_stand_on",
                                             "overtaking",
                                             "being_overtaken",
-                                            "congested_port"};
+                                            "congested_port",
+                                            "island"};
 
 }  // namespace
 

@@ -60,6 +60,43 @@ TEST(Simulation, PassingClearHasTheHandComputedMinimumSeparation) {
   EXPECT_NEAR(sim.minDistanceTo(1), 1500.0, 1e-6);
 }
 
+// An island 1 km square across the own ship's track (north at 5 m/s from the origin): its 100 x 20 m
+// hull first touches the south shore at y = 500 when the bow is there, centre at y = 450: t = 90 s.
+TEST(Simulation, AShipOverLandIsAGroundingAsBadAsACollision) {
+  const std::string island =
+      "static_obstacles:\n  - name: island\n    polygon: [{x_m: -500, y_m: 500}, {x_m: 500, y_m: 500}, "
+      "{x_m: 500, y_m: 1500}, {x_m: -500, y_m: 1500}]\n";
+  Simulation sim(parseScenario(scenarioYaml("  []\n", "  length_m: 100\n  beam_m: 20\n") + island));
+  EXPECT_FALSE(sim.grounded());
+  run(sim, 89.0);
+  EXPECT_FALSE(sim.grounded());
+  EXPECT_NEAR(sim.minObstacleDistanceOwn(), 500.0 - (89.0 * 5.0 + 50.0), 1e-6);  // 5 m short
+  run(sim, 2.0);
+  EXPECT_TRUE(sim.grounded());
+  EXPECT_DOUBLE_EQ(sim.minObstacleDistanceOwn(), 0.0);
+  EXPECT_FALSE(sim.collided());
+  int groundings = 0;
+  for (const auto& e : sim.events())
+    if (e.type == SimEvent::Grounding) {
+      ++groundings;
+      EXPECT_EQ(e.a, "own");
+      EXPECT_EQ(e.b, "island");
+      EXPECT_NEAR(e.time, 90.0, 0.11);
+    }
+  EXPECT_EQ(groundings, 1);  // once per contact, not once per step
+}
+
+TEST(Simulation, PassingBesideAnIslandKeepsItsHandComputedDistance) {
+  // The island's west shore at x = 300, the own ship's starboard side at x = 10: 290 m.
+  const std::string island =
+      "static_obstacles:\n  - name: island\n    polygon: [{x_m: 300, y_m: 500}, {x_m: 1300, y_m: 500}, "
+      "{x_m: 1300, y_m: 1500}, {x_m: 300, y_m: 1500}]\n";
+  Simulation sim(parseScenario(scenarioYaml("  []\n", "  length_m: 100\n  beam_m: 20\n") + island));
+  run(sim, 600.0);
+  EXPECT_FALSE(sim.grounded());
+  EXPECT_NEAR(sim.minObstacleDistanceOwn(), 290.0, 1e-6);
+}
+
 TEST(Simulation, GiveWayTargetTurnsToStarboardNonCompliantStandsOn) {
   // Crossing from our port side on a collision course: we are on its starboard bow, so it gives way.
   const std::string t =

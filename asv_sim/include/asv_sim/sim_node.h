@@ -3,7 +3,7 @@
 // Publishes: /clock (when publish_clock), <ship>/odom (nav_msgs/Odometry) and tf map -> <ship>/base_link
 //   for every ship, sim/nmea (asv_msgs/NmeaSentence: the traffic's AIVDM and the own radar's TTM),
 //   sim/ships (asv_msgs/TargetArray: ground truth, for evaluation and rviz), sim/events
-//   (asv_msgs/SimEvent), sim/markers (visualization_msgs/MarkerArray), /diagnostics
+//   (asv_msgs/SimEvent), sim/markers, sim/land (visualization_msgs/MarkerArray; land latched), /diagnostics
 // Subscribes: <ship>/cmd (asv_msgs/CourseSpeedSetpoint) for every ship that plans
 // Parameters: config/sim_node.yaml (every key documented there).
 #pragma once
@@ -54,6 +54,7 @@ private:
   };
   Sentences emitSensors();  // the NMEA the own ship's receivers get at this time
   void publishSensors(const Sentences& s);
+  void publishLand();
   bool publishNewEvents();  // true: the run must stop (stop_on_collision)
   void lockstepStart();
   // The END event, then (shutdown_at_end) linger until the evaluator has written its result.
@@ -78,7 +79,7 @@ private:
   SimNodeParams params_;
   std::unique_ptr<asv::Simulation> sim_;
   std::unique_ptr<asv::NmeaEmitter> emitter_;
-  ros::Publisher clock_pub_, nmea_pub_, ships_pub_, events_pub_, markers_pub_;
+  ros::Publisher clock_pub_, nmea_pub_, ships_pub_, events_pub_, markers_pub_, land_pub_;
   std::vector<ros::Publisher> odom_pubs_;
   std::vector<ros::Subscriber> cmd_subs_;
   tf2_ros::TransformBroadcaster tf_;

@@ -358,6 +358,8 @@ RunInfo RunInfo::fromScenario(const Scenario& sc, const std::string& planner, ui
   info.planner = planner.empty() ? "none" : planner;
   info.seed = seed;
   info.min_separation = sc.min_separation;
+  for (const auto& o : sc.obstacles)
+    info.obstacles.push_back(o.polygon);
   info.ships.push_back({sc.own.name, sc.own.goal, info.planner});
   for (const auto& t : sc.targets) {
     const bool plans = t.behaviour == Behaviour::Planner;
@@ -397,6 +399,8 @@ RunRecorder::RunRecorder(const EvaluationConfig& config, const RunInfo& info) : 
   tracks_.resize(n);
   min_dist_.assign(n, std::vector<double>(n, kFar));
   collided_.assign(n, std::vector<char>(n, 0));
+  grounded_.assign(n, 0);
+  min_obstacle_.assign(n, kFar);
   arrival_.assign(n, kNaN);
 }
 
@@ -434,6 +438,8 @@ void RunRecorder::addSample(double t, const std::vector<ShipSample>& ships) {
     }
     if (std::isfinite(s.course_setpoint))
       addSetpoint(t, s.name, s.course_setpoint);
+    if (s.active)
+      checkLand(static_cast<size_t>(i), s);
   }
   for (size_t a = 0; a < present.size(); ++a)
     for (size_t b = a + 1; b < present.size(); ++b) {
@@ -445,6 +451,19 @@ void RunRecorder::addSample(double t, const std::vector<ShipSample>& ships) {
       min_dist_[i][j] = std::min(min_dist_[i][j], d);
       min_dist_[j][i] = min_dist_[i][j];
     }
+}
+
+void RunRecorder::checkLand(size_t i, const ShipSample& s) {
+  if (info_.obstacles.empty())
+    return;
+  const Polygon hull = hullOutline(s.state.position, s.state.heading, std::max(0.0, s.state.length),
+                                   std::max(0.0, s.beam));
+  for (const Polygon& o : info_.obstacles) {
+    const double d = polygonDistance(hull, o);
+    min_obstacle_[i] = std::min(min_obstacle_[i], d);
+    if (d <= 0.0)
+      grounded_[i] = 1;
+  }
 }
 
 void RunRecorder::addSetpoint(double t, const std::string& ship, double course) {
@@ -465,8 +484,11 @@ void RunRecorder::addPlanTime(double seconds) {
 void RunRecorder::addEvent(const SimEvent& e) {
   const int a = index(e.a), b = index(e.b);
   switch (e.type) {
+    case SimEvent::Grounding:
+      if (a >= 0)
+        grounded_[a] = 1;
+      break;
     case SimEvent::Collision:
-      any_collision_ = true;
       if (a >= 0 && b >= 0)
         collided_[a][b] = collided_[b][a] = 1;
       break;
@@ -726,6 +748,8 @@ ShipResult RunRecorder::evaluateShip(size_t i) const {
     min_sep = std::min(min_sep, min_dist_[i][j]);
   }
   s.min_separation = min_sep < kFar ? min_sep : kNaN;
+  s.grounding = grounded_[i] != 0;
+  s.min_obstacle_distance = min_obstacle_[i] < kFar ? min_obstacle_[i] : kNaN;
   s.arrived = std::isfinite(arrival_[i]);
   s.time_to_goal = arrival_[i];
   s.path_length = tr.path_length;
@@ -749,7 +773,7 @@ ShipResult RunRecorder::evaluateShip(size_t i) const {
       ++evaluated;
     }
   }
-  if (s.collision)
+  if (s.collision || s.grounding)  // grounding is as bad as a collision
     s.colregs_score = 0.0;
   else if (evaluated > 0)
     s.colregs_score = sum / evaluated;
@@ -767,7 +791,10 @@ RunResult RunRecorder::finish() const {
   r.seed = info_.seed;
   r.own = evaluateShip(0);
   r.own.planner = info_.planner;
-  r.collision = any_collision_;
+  r.collision = r.own.collision;
+  for (size_t i = 1; i < collided_.size(); ++i)
+    for (size_t j = i + 1; j < collided_.size(); ++j)
+      r.collisions_between_targets += collided_[i][j];
   r.safety_violation = std::isfinite(r.own.min_separation) && r.own.min_separation < info_.min_separation;
   if (!plan_times_.empty()) {
     std::vector<double> v = plan_times_;
@@ -800,6 +827,9 @@ std::string toJson(const RunResult& r, bool pretty) {
   o.add("planner", Json::string(r.planner));
   o.add("seed", Json::integer(static_cast<long long>(r.seed)));
   o.add("collision", Json::boolean(r.collision));
+  o.add("collisions_between_targets", Json::integer(r.collisions_between_targets));
+  o.add("grounding", Json::boolean(r.own.grounding));
+  o.add("min_obstacle_distance_m", Json::number(r.own.min_obstacle_distance, kMetres));
   o.add("min_separation_m", Json::number(r.own.min_separation, kMetres));
   o.add("safety_violation", Json::boolean(r.safety_violation));
   o.add("arrived", Json::boolean(r.own.arrived));
@@ -822,6 +852,8 @@ std::string toJson(const RunResult& r, bool pretty) {
       e.add("name", Json::string(s.name));
       e.add("planner", Json::string(s.planner));
       e.add("collision", Json::boolean(s.collision));
+      e.add("grounding", Json::boolean(s.grounding));
+      e.add("min_obstacle_distance_m", Json::number(s.min_obstacle_distance, kMetres));
       e.add("min_separation_m", Json::number(s.min_separation, kMetres));
       e.add("arrived", Json::boolean(s.arrived));
       e.add("time_to_goal_s", Json::number(s.time_to_goal, kSeconds));
@@ -843,7 +875,12 @@ std::string summaryLine(const RunResult& r) {
   std::ostringstream os;
   os << r.scenario << " / " << r.planner << " / seed " << r.seed << ": "
      << (r.collision ? "COLLISION" : "no collision");
-  os << fmt(", min sep %.0f m", std::isfinite(r.own.min_separation) ? r.own.min_separation : -1.0);
+  if (r.own.grounding)
+    os << ", GROUNDING";
+  if (std::isfinite(r.own.min_separation))
+    os << fmt(", min sep %.0f m", r.own.min_separation);
+  else
+    os << ", no other ship";
   if (r.safety_violation)
     os << " (SAFETY VIOLATION)";
   if (r.own.arrived)

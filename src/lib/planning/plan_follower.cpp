@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
+#include "asv_core/common/geometry.h"
 #include "asv_core/common/units.h"
+#include "asv_core/planning/land_route.h"
 
 namespace asv {
 
@@ -21,6 +24,7 @@ void PlanFollowerConfig::validate() const {
   require(extremis_range >= 0 && plan_clearance >= 0, "extremis_range and plan_clearance must be >= 0 m");
   require(prediction_horizon > 0, "prediction_horizon must be > 0 s");
   require(min_separation >= 0 && risk_clear_time >= 0, "min_separation and risk_clear_time must be >= 0");
+  require(min_obstacle_clearance_m >= 0, "min_obstacle_clearance_m must be >= 0 m");
   require(limits.max_speed > 0 && limits.min_speed >= 0 && limits.min_speed <= limits.max_speed,
           "speeds must satisfy 0 <= min_speed <= max_speed, max_speed > 0");
   require(limits.turn_rate > 0 && limits.turn_delay >= 0, "turn_rate must be > 0, turn_delay >= 0");
@@ -41,6 +45,7 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   c.min_separation = p.getDouble("min_separation", c.min_separation);
   c.stand_on_policy = p.getBool("stand_on_policy", c.stand_on_policy);
   c.risk_clear_time = p.getDouble("risk_clear_time", c.risk_clear_time);
+  c.min_obstacle_clearance_m = p.getDouble("min_obstacle_clearance_m", c.min_obstacle_clearance_m);
   c.limits.max_speed = p.getDouble("max_speed", c.limits.max_speed);
   c.limits.min_speed = p.getDouble("min_speed", c.limits.min_speed);
   c.limits.turn_rate = p.getDouble("turn_rate", c.limits.turn_rate);
@@ -76,25 +81,53 @@ bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {
   return std::remainder(plan.course_setpoint - problem.own.course, 2 * kPi) < -degToRad(5.0);
 }
 
-Plan planObservingGiveWay(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
+namespace {
+
+// The plan keeps clear of land (plans that are not Ok are the follower's to handle).
+bool clearOfLand(const Plan& plan, const PlanningProblem& problem, double required) {
+  if (!(required > 0.0) || plan.status != PlanStatus::Ok)
+    return true;
+  const double reach = std::max(problem.own.speed, 0.5) * problem.prediction_horizon;
+  const auto track = landTrack(plan, problem.own.position, reach);
+  return trackObstacleDistance(track, problem.obstacles) >= required;
+}
+
+}  // namespace
+
+Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries) {
+  const double required =
+      landRequirement(problem.own.position, problem.goal, problem.obstacles, problem.min_obstacle_clearance);
   bool give_way = false;
   for (const auto& t : problem.targets)
     give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
+  auto toPort = [&](const Plan& p) { return give_way && firstAlterationToPort(p, problem); };
   Plan first = make(problem);
-  if (!give_way || !firstAlterationToPort(first, problem))
+  const bool first_clear = clearOfLand(first, problem, required);
+  if (first_clear && !toPort(first))
     return first;
+  const std::string why = first_clear ? "the first plan altered to port, Rules 14/15"
+                                      : "the first plan came within " +
+                                            std::to_string(static_cast<int>(required)) + " m of land";
   for (int k = 1; k <= retries; ++k) {
     problem.seed += 0x9E3779B9ULL * static_cast<uint64_t>(k);
     Plan again = make(problem);
-    if (!firstAlterationToPort(again, problem)) {
-      again.message += " (retry " + std::to_string(k) + ": the first plan altered to port, Rules 14/15)";
+    if (clearOfLand(again, problem, required) && !toPort(again)) {
+      again.message += " (retry " + std::to_string(k) + ": " + why + ")";
       again.compute_time += first.compute_time;
       return again;
     }
   }
-  first.message += " (port alteration kept: no starboard plan in " + std::to_string(retries) + " retries)";
-  return first;
+  if (first_clear) {
+    first.message += " (port alteration kept: no starboard plan in " + std::to_string(retries) + " retries)";
+    return first;
+  }
+  Plan none;
+  none.status = PlanStatus::NoSolution;
+  none.compute_time = first.compute_time;
+  none.message = "every plan in " + std::to_string(retries + 1) + " tries came within " +
+                 std::to_string(static_cast<int>(required)) + " m of land";
+  return none;
 }
 
 PlanFollower::PlanFollower(const PlanFollowerConfig& config) : cfg_(config) {
@@ -113,11 +146,20 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   pr.own = *own_;
   pr.own.speed = std::max(pr.own.speed, cfg_.cruise_speed);  // plan for the cruising speed
   pr.limits = cfg_.limits;
-  pr.goal = goal_ ? *goal_ : own_->position + courseSpeedToVelocity(own_->course, 20000.0);
+  pr.goal = goalOrAhead();
   pr.obstacles = obstacles_;
+  // Round land: the planners steer for the route's next point (none when the straight way is clear).
+  // Land beyond the reach (speed x horizon) of the straight way is left to a later plan.
+  const double required = landRequirement(pr.own.position, pr.goal, obstacles_, cfg_.min_obstacle_clearance_m);
+  const double reach = std::max(pr.own.speed, 0.5) * cfg_.prediction_horizon;
+  if (required > 0.0 && trackObstacleDistance(truncateTrack({pr.own.position, pr.goal}, reach), obstacles_) < required)
+    if (auto route = landRoute(pr.own.position, pr.goal, obstacles_, cfg_.min_obstacle_clearance_m, required))
+      pr.route = std::move(*route);
   pr.seed = static_cast<uint64_t>(cfg_.seed) + replans_;
   pr.time_budget = cfg_.time_budget;
   pr.min_separation = cfg_.min_separation;
+  pr.min_obstacle_clearance = cfg_.min_obstacle_clearance_m;
+  pr.prediction_horizon = cfg_.prediction_horizon;
   for (const auto& t : targets) {
     if (t.state.id == own_->id || !t.state.finite())
       continue;
@@ -143,8 +185,16 @@ Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std
       f.course_setpoint = wrapTwoPi(own_->course + kPi / 2);
       f.speed_setpoint = cfg_.cruise_speed;
       f.message = "fallback (" + why + "): in extremis with " + t.state.id + ", hard starboard";
-      break;
+      return f;
     }
+  // Holding course onto land is no fallback: the ship stops instead (a grounding is as bad as a collision).
+  const double required = landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
+  if (required > 0.0 &&
+      trackObstacleDistance(landTrack(f, own_->position, f.speed_setpoint * cfg_.prediction_horizon), obstacles_) <
+          required) {
+    f.speed_setpoint = 0.0;
+    f.message = "fallback (" + why + "): land ahead on the present course, stop";
+  }
   return f;
 }
 
@@ -185,6 +235,28 @@ double PlanFollower::predictedClearance(const std::vector<PlannerTarget>& target
   return best;
 }
 
+bool PlanFollower::landAhead() const {
+  const double required = landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
+  if (!(required > 0.0))
+    return false;
+  const double reach = std::max(speed_sp_, cfg_.cruise_speed) * cfg_.prediction_horizon;
+  std::vector<Eigen::Vector2d> track{own_->position};
+  if (plan_.waypoints.size() >= 2) {
+    for (size_t i = wp_index_; i < plan_.waypoints.size(); ++i)
+      track.push_back(plan_.waypoints[i].position);
+    if (wp_index_ >= plan_.waypoints.size() && goal_)
+      track.push_back(*goal_);  // past the plan the ship steers for the goal
+    track = truncateTrack(track, reach);
+  } else {
+    track = landTrack(plan_, own_->position, reach);
+  }
+  return trackObstacleDistance(track, obstacles_) < required;
+}
+
+Eigen::Vector2d PlanFollower::goalOrAhead() const {
+  return goal_ ? *goal_ : own_->position + courseSpeedToVelocity(own_->course, 20000.0);
+}
+
 bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why) {
   if (!have_plan_)
     return why = "first plan", true;
@@ -218,6 +290,11 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
             std::to_string(static_cast<int>(t.risk));
       return true;
     }
+  }
+  if (plan_.status == PlanStatus::Ok && landAhead()) {
+    why = "plan predicted to pass within " +
+          std::to_string(static_cast<int>(cfg_.min_obstacle_clearance_m)) + " m of land";
+    return true;
   }
   // A plan is kept while it stays safe; periodic replanning of a safe plan would only make the ship weave.
   // The bar is plan_clearance, raised to the situation's minimum separation when there is one: a plan

@@ -5,29 +5,6 @@
 
 namespace asv {
 
-bool pointInPolygon(const Polygon& poly, const Eigen::Vector2d& p) {
-  const size_t n = poly.size();
-  if (n < 3)
-    return false;
-  bool inside = false;
-  for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Eigen::Vector2d& a = poly[i];
-    const Eigen::Vector2d& b = poly[j];
-    // On-edge test: collinear and within the segment's bounding box.
-    const Eigen::Vector2d ab = b - a, ap = p - a;
-    const double cross = ab.x() * ap.y() - ab.y() * ap.x();
-    const double scale = ab.norm() * ap.norm();
-    if (std::fabs(cross) <= 1e-12 * std::max(1.0, scale) && ap.dot(p - b) <= 0.0)
-      return true;
-    if ((a.y() > p.y()) != (b.y() > p.y())) {
-      const double x_cross = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
-      if (p.x() < x_cross)
-        inside = !inside;
-    }
-  }
-  return inside;
-}
-
 void HexagonDomainConfig::validate() const {
   for (double v : {a, b, c, d, e})
     if (!std::isfinite(v) || v <= 0.0)

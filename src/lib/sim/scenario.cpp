@@ -345,10 +345,17 @@ void readHeader(const Ctx& c, const YAML::Node& root, Scenario& s) {
   }
   if (root["safety"]) {
     const YAML::Node sf = root["safety"];
-    c.onlyKeys(sf, "safety", {"min_separation_m"});
-    s.min_separation = c.number(sf, "min_separation_m", "safety.");
-    if (s.min_separation <= 0.0)
-      c.fail(sf, "safety.min_separation_m", "must be > 0 m");
+    c.onlyKeys(sf, "safety", {"min_separation_m", "min_obstacle_clearance_m"});
+    if (sf["min_separation_m"] || !sf["min_obstacle_clearance_m"]) {
+      s.min_separation = c.number(sf, "min_separation_m", "safety.");
+      if (s.min_separation <= 0.0)
+        c.fail(sf, "safety.min_separation_m", "must be > 0 m");
+    }
+    if (sf["min_obstacle_clearance_m"]) {
+      s.min_obstacle_clearance = c.number(sf, "min_obstacle_clearance_m", "safety.");
+      if (s.min_obstacle_clearance <= 0.0)
+        c.fail(sf, "safety.min_obstacle_clearance_m", "must be > 0 m");
+    }
   }
 }
 

@@ -33,6 +33,8 @@ const char* toString(SimEvent::Type t) {
       return "near_miss";
     case SimEvent::Arrival:
       return "arrival";
+    case SimEvent::Grounding:
+      return "grounding";
   }
   return "?";
 }
@@ -115,6 +117,9 @@ Simulation::Simulation(const Scenario& scenario, const SimConfig& config)
   min_dist_.assign(n, 1e12);
   in_contact_.assign(n, std::vector<char>(n, 0));
   in_near_miss_.assign(n, std::vector<char>(n, 0));
+  aground_.assign(n, std::vector<char>(scenario_.obstacles.size(), 0));
+  for (const auto& o : scenario_.obstacles)
+    obstacle_boxes_.push_back(boundingBox(o.polygon));
   referee();
 }
 
@@ -266,7 +271,39 @@ bool Simulation::hullsTouch(const SimVessel& a, const SimVessel& b) {
   return true;
 }
 
+Polygon Simulation::hull(const SimVessel& v) {
+  return hullOutline(v.position(), v.state().psi, v.length, v.beam);
+}
+
+// Grounding is as bad as a collision: a hull outline touching a static obstacle is an event (once per
+// contact, as a collision), and the own hull's distance to land is kept for the result.
+void Simulation::refereeLand() {
+  const auto& obstacles = scenario_.obstacles;
+  for (size_t i = 0; i < vessels_.size(); ++i) {
+    const SimVessel& v = vessels_[i];
+    if (v.arrived)
+      continue;
+    const Polygon outline = hull(v);
+    const Eigen::AlignedBox2d box = boundingBox(outline);
+    for (size_t k = 0; k < obstacles.size(); ++k) {
+      // The boxes' distance bounds the outlines' from below: the exact test only where it can matter.
+      const double bound = box.exteriorDistance(obstacle_boxes_[k]);
+      const double needed = i == 0 ? min_obstacle_own_ : 0.0;
+      const double d = bound > needed ? bound : polygonDistance(outline, obstacles[k].polygon);
+      if (i == 0)
+        min_obstacle_own_ = std::min(min_obstacle_own_, d);
+      const bool touch = d <= 0.0;
+      if (touch && !aground_[i][k]) {
+        events_.push_back({SimEvent::Grounding, time_, v.name, obstacles[k].name, 0.0});
+        grounded_own_ = grounded_own_ || i == 0;
+      }
+      aground_[i][k] = touch;
+    }
+  }
+}
+
 void Simulation::referee() {
+  refereeLand();
   const size_t n = vessels_.size();
   for (size_t i = 0; i < n; ++i) {
     for (size_t j = i + 1; j < n; ++j) {

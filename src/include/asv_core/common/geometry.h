@@ -2,8 +2,11 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace asv {
 
@@ -32,5 +35,34 @@ inline bool segmentsIntersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b
                       double c) { return c == 0.0 && (r - s0).dot(r - s1) <= 0.0; };
   return onSegment(a, b, c, d1) || onSegment(a, b, d, d2) || onSegment(c, d, a, d3) || onSegment(c, d, b, d4);
 }
+
+using Polygon = std::vector<Eigen::Vector2d>;  // vertices in order (either sense), ENU [m]
+
+// Point-in-polygon by the crossing rule (even-odd); works for convex and concave simple polygons.
+// Points exactly on an edge count as inside.
+bool pointInPolygon(const Polygon& poly, const Eigen::Vector2d& p);
+
+// Shortest distance between the segment p-q and the boundary of `poly` (0 when they cross or touch).
+// A segment wholly inside the polygon is its distance to the boundary: see segmentObstacleDistance.
+double segmentPolygonDistance(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q);
+
+// Shortest distance from the segment p-q to the area of `poly`: 0 when any part of it lies inside or
+// on the boundary. How far a straight leg of a track passes from an obstacle.
+double segmentObstacleDistance(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q);
+
+// Shortest distance between the areas of two polygons: 0 when they overlap or touch (one inside the
+// other included). How far a hull outline is from land.
+double polygonDistance(const Polygon& a, const Polygon& b);
+
+// The axis-aligned box round a polygon's vertices (empty for no vertices).
+Eigen::AlignedBox2d boundingBox(const Polygon& poly);
+
+// Triangles covering a simple polygon (convex or concave, either sense), by ear clipping: index
+// triples into `poly`, n - 2 of them. Empty for fewer than 3 vertices. For filled drawings of land.
+std::vector<std::array<int, 3>> triangulate(const Polygon& poly);
+
+// A ship's hull outline: the length x beam rectangle centred on the reference point, along `heading`
+// [rad, nautical], corners in order (bow starboard, stern starboard, stern port, bow port).
+Polygon hullOutline(const Eigen::Vector2d& position, double heading, double length, double beam);
 
 }  // namespace asv

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include "asv_core/common/geometry.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/common/types.h"
 #include "asv_core/risk/colregs.h"
@@ -102,6 +103,7 @@ struct RunInfo {
     std::string planner;                  // "" for traffic without a planner
   };
   std::vector<Ship> ships;  // ships[0] is the own ship; every sample lists ships by these names
+  std::vector<Polygon> obstacles;  // static obstacles (land), ENU [m]
 
   // From a scenario: the own ship first, then the targets in file order.
   static RunInfo fromScenario(const Scenario& scenario, const std::string& planner, uint64_t seed);
@@ -113,6 +115,7 @@ struct ShipSample {
   ShipState state;  // position, course and speed over ground, heading
   double course_setpoint = std::numeric_limits<double>::quiet_NaN();  // [rad]; NaN when unknown
   bool active = true;  // false once the ship has arrived and left the scenario
+  double beam = 0.0;   // [m] with state.length, the hull outline checked against land (0: a point)
 };
 
 struct Manoeuvre {
@@ -141,7 +144,10 @@ struct ShipResult {
   std::string name;
   std::string planner;
   bool collision = false;
+  bool grounding = false;  // the hull touched a static obstacle (a grounding event or a sample)
   double min_separation = std::numeric_limits<double>::quiet_NaN();  // [m] to any other ship
+  // [m] hull outline to the nearest static obstacle over the run's samples; NaN without obstacles
+  double min_obstacle_distance = std::numeric_limits<double>::quiet_NaN();
   bool arrived = false;
   double time_to_goal = std::numeric_limits<double>::quiet_NaN();  // [s]
   double path_length = 0.0;                                        // [m]
@@ -155,7 +161,8 @@ struct RunResult {
   std::string scenario, planner;
   uint64_t seed = 0;
   ShipResult own;
-  bool collision = false;  // any two ships of the run collided
+  bool collision = false;                // the own ship touched another ship
+  int collisions_between_targets = 0;    // pairs of other ships that touched each other
   bool safety_violation = false;
   struct PlanTime {
     double median_ms = std::numeric_limits<double>::quiet_NaN();
@@ -212,6 +219,8 @@ private:
   using Instants = std::vector<std::pair<const Point*, const Point*>>;
   struct Passage;
   int index(const std::string& name) const;
+  // Ship i's hull in sample s against every static obstacle: min_obstacle_, grounded_.
+  void checkLand(size_t i, const ShipSample& s);
   ShipResult evaluateShip(size_t i) const;
   TargetResult evaluatePair(size_t i, size_t j) const;
   Instants commonInstants(size_t i, size_t j) const;
@@ -227,9 +236,10 @@ private:
   std::vector<Track> tracks_;
   std::vector<std::vector<double>> min_dist_;  // pairwise, while both active
   std::vector<std::vector<char>> collided_;    // pairwise collision events
+  std::vector<char> grounded_;                 // per ship: grounding event or hull on land
+  std::vector<double> min_obstacle_;           // per ship [m]: hull to the nearest obstacle
   std::vector<double> arrival_;                // arrival time per ship (NaN: none)
   std::vector<double> plan_times_;
-  bool any_collision_ = false;
   double wall_time_ = 0.0;
   double last_t_ = -1e300;
   size_t samples_ = 0;

@@ -4,7 +4,9 @@
 //    the rest of the plan flown from here would pass a target closer than plan_clearance, and
 //    periodically while the last plan is not Ok; never faster than min_replan_interval;
 //  - a plan that fails (NoSolution or an exception) becomes the fallback: hold course at a fraction of
-//    the speed, or hard to starboard when an urgent target is within extremis_range (Rules 17(b), 2(b));
+//    the speed, or hard to starboard when an urgent target is within extremis_range (Rules 17(b), 2(b)),
+//    or stopped when that course would take the ship onto land;
+//  - no plan may bring the ship closer to land than min_obstacle_clearance_m (planUnderSharedRules);
 //  - set-points steer for the next plan waypoint not yet within waypoint_acceptance, then for the goal.
 // Times are the caller's clock (simulation or ROS time) in seconds.
 #pragma once
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include "asv_core/common/param_map.h"
+#include "asv_core/planning/land_route.h"
 #include "asv_core/planning/planning.h"
 
 namespace asv {
@@ -35,6 +38,9 @@ struct PlanFollowerConfig {
   double min_separation = 0.0;         // [m] passing distance the planners must keep (0: their own)
   bool stand_on_policy = true;         // Rule 17(a)(i): a compliant give-way target below Hu's urgent
                                        // level is left out of the problem: the own ship stands on
+  // [m] every plan keeps the track this far from static obstacles (land); a ship already closer may not
+  // halve her distance. 0.1 nm, as MOPSO's land clearance (Hu et al. 2017 Fig. 4(b)): our choice.
+  double min_obstacle_clearance_m = 185.2;
   double risk_clear_time = 60.0;       // [s] a target's risk must stay none, with its CPA past, this
                                        // long before a new rise replans again (tracking noise flickers
                                        // round thresholds; a plan that works lowers the risk)
@@ -46,12 +52,16 @@ struct PlanFollowerConfig {
   static PlanFollowerConfig fromParams(const ParamMap& params);
 };
 
-// Rules 14 and 15 for every planner: when the own ship gives way in a head-on or crossing encounter
-// (a target of the problem with that encounter), a plan whose first alteration is more than 5 deg to
-// port is refused and the planner asked again with another seed, up to `retries` times; if none
-// complies, the first plan is returned with a note in its message. Plans without such a target, and
-// fallbacks, pass unchanged. `make` is the planner (it may throw; the exception propagates).
-Plan planObservingGiveWay(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
+// The rules every planner's plan must keep, whatever the algorithm; a plan that breaks one is refused
+// and the planner asked again with another seed, up to `retries` times:
+//  - land: a plan whose track (landTrack) comes closer to a static obstacle than landRequirement()
+//    allows. If none keeps clear, the result is NoSolution (the follower's fallback, which stops
+//    rather than run aground);
+//  - Rules 14 and 15: when the own ship gives way in a head-on or crossing encounter (a target of the
+//    problem with that encounter), a first alteration more than 5 deg to port. If none complies, the
+//    first plan is kept with a note in its message.
+// Fallbacks pass unchanged. `make` is the planner (it may throw; the exception propagates).
+Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries = 3);
 bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
 
@@ -106,6 +116,10 @@ public:
 
 private:
   double predictedClearance(const std::vector<PlannerTarget>& targets) const;
+  // The rest of the plan in force, flown from here, comes closer to land than landRequirement.
+  bool landAhead() const;
+  // The goal, or 20 km ahead on the present course without one.
+  Eigen::Vector2d goalOrAhead() const;
 
   PlanFollowerConfig cfg_;
   std::optional<Eigen::Vector2d> goal_;

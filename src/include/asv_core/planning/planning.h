@@ -61,6 +61,11 @@ struct PlanningProblem {
   // [m] the passing distance the situation demands (a scenario's safety.min_separation_m); every
   // planner keeps its own safe distance at least kSeparationMargin times this. 0: the paper's own.
   double min_separation = 0.0;
+  // [m] how far from static obstacles (land) every plan must keep (PlanFollowerConfig's
+  // min_obstacle_clearance_m; 0: no requirement). Planners that model land use it; the shared layer
+  // (planUnderSharedRules) refuses a plan that comes closer.
+  double min_obstacle_clearance = 0.0;
+  double prediction_horizon = 1200.0;  // [s] how far ahead a plan without waypoints is followed
 };
 
 // Margin on PlanningProblem::min_separation: plans are made at kinematic constant-velocity prediction,

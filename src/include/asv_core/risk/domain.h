@@ -5,15 +5,10 @@
 
 #include <Eigen/Core>
 
+#include "asv_core/common/geometry.h"
 #include "asv_core/common/types.h"
 
 namespace asv {
-
-using Polygon = std::vector<Eigen::Vector2d>;  // vertices in order (either sense), ENU [m]
-
-// Point-in-polygon by the crossing rule (even-odd); works for convex and concave simple polygons.
-// Points exactly on an edge count as inside.
-bool pointInPolygon(const Polygon& poly, const Eigen::Vector2d& p);
 
 // Circle domain of radius r [m] round a ship.
 struct CircleDomain {

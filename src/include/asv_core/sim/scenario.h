@@ -66,6 +66,9 @@ struct Scenario {
   GeoPoint origin;                // geodetic origin of the local frame
   bool has_origin = false;        // false: origin defaults to 0 N 0 E (documented)
   double min_separation = 926.0;  // [m] evaluation threshold (default 0.5 nm)
+  // [m] safety.min_obstacle_clearance_m: how far from land every plan keeps in these waters (a port's
+  // is smaller than the open sea's); 0: not given, the planner node's min_obstacle_clearance_m.
+  double min_obstacle_clearance = 0.0;
   ScenarioShip own;
   std::vector<ScenarioShip> targets;
   std::vector<StaticObstacle> obstacles;

@@ -3,6 +3,7 @@
 // ROS-free: sim_node and the batch runner drive the same class.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <random>
@@ -11,6 +12,7 @@
 
 #include "asv_core/codec/nmea_encode.h"
 #include "asv_core/common/geodesy.h"
+#include "asv_core/common/geometry.h"
 #include "asv_core/risk/risk_level.h"
 #include "asv_core/sim/autopilot.h"
 #include "asv_core/sim/scenario.h"
@@ -72,7 +74,8 @@ struct SimVessel {
 };
 
 struct SimEvent {
-  enum Type { Collision, NearMiss, Arrival } type;
+  // Grounding: ship a's hull outline touched static obstacle b (land); distance 0.
+  enum Type { Collision, NearMiss, Arrival, Grounding } type;
   double time = 0.0;
   std::string a, b;
   double distance = 0.0;  // [m]
@@ -106,13 +109,20 @@ public:
   bool collided() const { return collided_; }
   double minSeparationOwn() const { return min_sep_own_; }  // [m] own ship to any other, whole run
   double minDistanceTo(size_t vessel_index) const { return min_dist_[vessel_index]; }  // own to vessel i
+  // The own ship's hull touched a static obstacle at some time of the run.
+  bool grounded() const { return grounded_own_; }
+  // [m] own hull to the nearest static obstacle, whole run; infinity without obstacles.
+  double minObstacleDistanceOwn() const { return min_obstacle_own_; }
   // Hull outlines of two ships touch (separating axis test on their rectangles).
   static bool hullsTouch(const SimVessel& a, const SimVessel& b);
+  // A ship's hull outline now (hullOutline of its position, heading, length and beam).
+  static Polygon hull(const SimVessel& v);
 
 private:
   void steer(SimVessel& v);
   void giveWayLogic(SimVessel& v, size_t index);
   void referee();
+  void refereeLand();
 
   Scenario scenario_;
   SimConfig cfg_;
@@ -124,6 +134,10 @@ private:
   double min_sep_own_ = 1e12;
   std::vector<double> min_dist_;
   std::vector<std::vector<char>> in_contact_, in_near_miss_;
+  std::vector<std::vector<char>> aground_;  // [vessel][obstacle]: hull touching it now
+  std::vector<Eigen::AlignedBox2d> obstacle_boxes_;
+  bool grounded_own_ = false;
+  double min_obstacle_own_ = std::numeric_limits<double>::infinity();
 };
 
 // NMEA the traffic emits, as an AIS receiver and a radar on the own ship would receive it.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "asv_core/planning/land_route.h"
 #include "asv_core/risk/cpa.h"
 
 namespace asv {
@@ -158,7 +159,15 @@ DssaAgent::Candidate DssaAgent::makeCandidate(double crs, double spc) const {
   // DSSA+ (Sec. 4): + beta |min(max(CurSPD + spc, MinSPD), MaxSPD) - RefSPD| / MaxSPD.
   if (config_.speed_changes)
     c.ef += config_.beta * std::fabs(c.speed - speeds_.ref) / speeds_.max;
+  if (land_ && land_required_ > 0.0 &&
+      trackObstacleDistance({position_, position_ + c.disp}, *land_) < land_required_)
+    c.ef += kLandInefficiency;
   return c;
+}
+
+void DssaAgent::setLand(const std::vector<StaticObstacle>* obstacles, double required) {
+  land_ = obstacles;
+  land_required_ = required;
 }
 
 double DssaAgent::destinationCourseChange() const {
@@ -464,7 +473,11 @@ Plan DssaPlanner::plan(const PlanningProblem& problem) {
       if (t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay)
         cfg.starboard_only = true;  // Rules 14-16 (see DssaConfig::colregs)
   DssaAgent agent(0, cfg, sp);
-  agent.setOwn(problem.own, problem.goal, problem.time);
+  // Land (not in the paper): steer for the route's next point round it, never onto it.
+  const Eigen::Vector2d next = problem.route.empty() ? problem.goal : problem.route.front();
+  agent.setLand(&problem.obstacles, landRequirement(problem.own.position, problem.goal, problem.obstacles,
+                                                    problem.min_obstacle_clearance));
+  agent.setOwn(problem.own, next, problem.time);
   int id = 1;
   for (const auto& t : problem.targets) {
     if (!t.state.finite())

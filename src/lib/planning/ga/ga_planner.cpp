@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "asv_core/planning/land_route.h"
+
 namespace asv {
 
 namespace {
@@ -162,6 +164,11 @@ GaFitness::GaFitness(const PlanningProblem& problem, const GaConfig& cfg) : cfg_
   sda_floor_ = kSeparationMargin * std::max(0.0, problem.min_separation);
   const Eigen::Vector2d next = problem.route.empty() ? problem.goal : problem.route.front();
   reference_course_ = (next - own_.position).norm() > 1e-6 ? trueBearing(own_.position, next) : own_.course;
+  next_ = next;
+  land_ = &problem.obstacles;
+  land_required_ =
+      landRequirement(problem.own.position, problem.goal, problem.obstacles, problem.min_obstacle_clearance);
+  land_reach_ = std::max(problem.own.speed, 0.5) * problem.prediction_horizon;
   own_.course = own_.heading = reference_course_;
 
   const Eigen::Vector2d v_own = own_.velocity();
@@ -198,6 +205,14 @@ Cpa GaFitness::cpa(size_t i, double alteration) const {
   const Target& t = targets_.at(i);
   const Eigen::Vector2d v = courseSpeedToVelocity(reference_course_ + alteration, own_.speed);
   return computeCpa(own_.position, v, t.state.position, t.velocity);
+}
+
+double GaFitness::legTime(double alteration) const {
+  double t = cfg_.min_leg_time_s;
+  for (size_t k = 0; k < info_.size(); ++k)
+    if (info_[k].priority)
+      t = std::max(t, cpa(k, alteration).tcpa);
+  return t;
 }
 
 GaCostTerms GaFitness::terms(double alteration) const {
@@ -255,7 +270,12 @@ GaCostTerms GaFitness::terms(double alteration) const {
   j.safety = cfg_.safety_penalty * shortfall;
   j.colregs = cfg_.colregs_penalty * violations;
   j.turn = cfg_.turn_penalty * std::fabs(alteration) / degToRad(cfg_.max_alteration_deg);
-  j.total = j.risk + j.new_risk + j.safety + j.colregs + j.turn;
+  if (land_required_ > 0.0) {
+    const Eigen::Vector2d leg_end = own_.position + v_own * legTime(alteration);
+    if (trackObstacleDistance(truncateTrack({own_.position, leg_end, next_}, land_reach_), *land_) < land_required_)
+      j.land = kLandCost;
+  }
+  j.total = j.risk + j.new_risk + j.safety + j.colregs + j.turn + j.land;
   return j;
 }
 
@@ -421,13 +441,12 @@ Plan GaPlanner::plan(const PlanningProblem& problem) {
   plan.cost = run.cost;
 
   // The evasive leg lasts until the last priority target's CPA on the new heading.
-  double leg_time = cfg_.min_leg_time_s;
+  const double leg_time = fitness.legTime(run.alteration);
   std::string ids;
   const auto& info = fitness.targets();
   for (size_t k = 0; k < info.size(); ++k) {
     if (!info[k].priority)
       continue;
-    leg_time = std::max(leg_time, fitness.cpa(k, run.alteration).tcpa);
     const std::string& id = problem.targets[info[k].index].state.id;
     ids += (ids.empty() ? "" : ",") + (id.empty() ? std::to_string(info[k].index) : id) + "(" +
            toString(info[k].geometry.encounter) + fmt(" CRI %.3f)", info[k].cri);

@@ -256,20 +256,6 @@ double segmentLengthInside(const Polygon& poly, const Eigen::Vector2d& p, const 
   return inside;
 }
 
-double segmentPolygonDistance(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
-  const size_t n = poly.size();
-  double best = std::numeric_limits<double>::infinity();
-  for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Eigen::Vector2d& a = poly[j];
-    const Eigen::Vector2d& b = poly[i];
-    if (segmentsIntersect(p, q, a, b))
-      return 0.0;
-    best = std::min({best, pointSegmentDistance(p, a, b), pointSegmentDistance(q, a, b),
-                     pointSegmentDistance(a, p, q), pointSegmentDistance(b, p, q)});
-  }
-  return best;
-}
-
 double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                      double clearance) {
   if (poly.size() < 3)

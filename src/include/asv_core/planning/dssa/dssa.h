@@ -159,6 +159,11 @@ public:
   // Neighbours' intentions received earlier are kept (last known, extrapolated along their intended
   // velocity from their stamp to `now`) until a newer one arrives or forget() is called.
   void setOwn(const ShipState& state, const Eigen::Vector2d& goal, double now = 0.0);
+  // Not in the paper (open sea): static obstacles. A candidate whose move over TimeWindow comes closer
+  // to land than `required` [m] gets kLandInefficiency added to its EF, so that it is chosen only when
+  // every candidate would. Call before setOwn(); `obstacles` must outlive the agent's use of it.
+  void setLand(const std::vector<StaticObstacle>* obstacles, double required);
+  static constexpr double kLandInefficiency = 1e6;
 
   // Stores a neighbour's intention (replaces an older one of the same ship; an older round of the
   // same stamp is ignored). Own messages are ignored.
@@ -220,6 +225,8 @@ private:
   Eigen::Vector2d position_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d goal_ = Eigen::Vector2d::Zero();
   double heading_ = 0, speed_ = 0, now_ = 0, theta_dest_ = 0;
+  const std::vector<StaticObstacle>* land_ = nullptr;
+  double land_required_ = 0.0;
   std::vector<Candidate> cand_;
   std::vector<Neighbour> nb_;
   std::vector<double> total_;

@@ -143,6 +143,10 @@ struct GaCostTerms {
   double safety = 0.0;    // safety_penalty * sum of (SDA - DCPA)/SDA shortfalls (eq. 7, 10)
   double colregs = 0.0;   // colregs_penalty * number of violations (section 2.1)
   double turn = 0.0;      // turn_penalty * |alteration| / max_alteration
+  // Not in the paper (its port has no land model): kLandCost when the evasive leg, or the way from its
+  // end back to the route, comes closer to land than the clearance; such a heading is taken only when
+  // every heading would.
+  double land = 0.0;
   double total = 0.0;     // the GA's objective J (lower is better); Plan::cost of the best
 };
 
@@ -162,6 +166,10 @@ public:
   GaCostTerms terms(double alteration) const;
   // CPA of target i (index into targets()) with the own ship on the candidate heading.
   Cpa cpa(size_t i, double alteration) const;
+  // [s] how long the evasive leg lasts: until the last priority target's CPA on the candidate heading,
+  // at least min_leg_time_s.
+  double legTime(double alteration) const;
+  static constexpr double kLandCost = 1e6;
 
 private:
   double sda_floor_ = 0.0;
@@ -180,6 +188,10 @@ private:
   double max_cri_ = 0.0;
   std::vector<Target> targets_;
   std::vector<GaTargetInfo> info_;
+  const std::vector<StaticObstacle>* land_ = nullptr;
+  double land_required_ = 0.0;  // [m] landRequirement of the problem; 0: no land
+  double land_reach_ = 0.0;     // [m] how far along the candidate's track land is judged
+  Eigen::Vector2d next_ = Eigen::Vector2d::Zero();  // the route's next point (or the goal)
 };
 
 // Result of one GA run, for tests and tools.

@@ -139,8 +139,6 @@ double starboardViolation(double alteration, const MopsoConfig& cfg);  // eq. (6
 double safetyViolation(double f);                                      // eq. (11): max(0, f)
 // Length [m] of the segment p->q inside the polygon (exact: edge crossings, then even-odd per piece).
 double segmentLengthInside(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q);
-// Shortest distance [m] between the segment p->q and the polygon's boundary.
-double segmentPolygonDistance(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q);
 // Static obstacles (Fig. 4(b)): length inside plus the shortfall from the clearance [m]; 0 = clear.
 double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                      double clearance);
