@@ -93,7 +93,7 @@ asv::ParamMap PlannerNode::applyScenario() {
   asv::PlannerNodeConfig& p = params_;
   if (p.scenario.empty())
     return {};
-  const asv::Scenario sc = asv::loadScenario(p.scenario);
+  const asv::Scenario sc = asv::loadScenario(p.scenario, p.charts);
   obstacles_ = sc.obstacles;
   const asv::ScenarioShip* ship = sc.own.name == p.ship ? &sc.own : nullptr;
   for (const auto& t : sc.targets)

@@ -47,6 +47,10 @@ const char* kUsage =
     "  --agents NAME        planner of every target whose behaviour is planner (default: each its own)\n"
     "  --set P.KEY=VALUE    planner parameter, over the scenario's planner_params (repeatable), e.g.\n"
     "                       --set dssa_plus.preset=dssa_plus_sc\n"
+    "  --charts SOURCE      land from gshhg or a chart file (GeoJSON, shapefile, S-57 cell) over the\n"
+    "                       scenario's charts.source (the scenario needs an origin)\n"
+    "  --chart-cache DIR    chart extraction cache (default $ASV_CHART_CACHE or ~/.cache/asv/charts;\n"
+    "                       none: no cache)\n"
     "  --seed S             first seed (default 1)\n"
     "  --runs N             runs with seeds S .. S+N-1 (default 1)\n"
     "  --json OUT           append the results to OUT (JSON Lines); default: stdout\n"
@@ -65,6 +69,7 @@ const char* kUsage =
 struct Options {
   std::string scenario, planner, json, trajectory, agents;
   bool planner_given = false;
+  asv::ChartOptions charts;
   std::vector<std::pair<std::string, std::string>> params;  // "planner/key", value
   uint64_t seed = 1;
   int runs = 1;
@@ -105,6 +110,10 @@ Options parseArgs(int argc, char** argv) {
     } else if (a == "--planner") {
       o.planner = value();
       o.planner_given = true;
+    } else if (a == "--charts") {
+      o.charts.source = value();
+    } else if (a == "--chart-cache") {
+      o.charts.cache_dir = value();
     } else if (a == "--agents") {
       o.agents = value();
     } else if (a == "--set") {
@@ -494,7 +503,7 @@ int main(int argc, char** argv) {
   const Options o = parseArgs(argc, argv);
   asv::Scenario sc;
   try {
-    sc = asv::loadScenario(o.scenario);
+    sc = asv::loadScenario(o.scenario, o.charts);
   } catch (const std::exception& e) {
     std::cerr << "asv_batch: bad scenario: " << e.what() << "\n";
     return 2;

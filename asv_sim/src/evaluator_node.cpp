@@ -36,7 +36,7 @@ asv::EvaluatorNodeConfig loadEvaluatorParams(const ros::NodeHandle& pnh) {
 EvaluatorNode::EvaluatorNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh), pnh_(pnh), params_(loadEvaluatorParams(pnh)) {
   if (!params_.scenario.empty())
-    scenario_ = std::make_unique<asv::Scenario>(asv::loadScenario(params_.scenario));
+    scenario_ = std::make_unique<asv::Scenario>(asv::loadScenario(params_.scenario, params_.charts));
   // Lockstep: samples, then plans and set-points, then events; only an event wakes the node (the END
   // event writes the result), and everything before it is delivered first, in order.
   ships_sub_ = lockstep_.subscribe("sim/ships", 20, &EvaluatorNode::shipsCallback, this, false);

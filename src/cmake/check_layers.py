@@ -7,7 +7,7 @@ import os
 import re
 import sys
 
-STAGES = ["common", "codec", "tracking", "risk", "planning", "sim", "eval", "papers"]
+STAGES = ["common", "charts", "codec", "tracking", "risk", "planning", "sim", "eval", "papers"]
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]')
 ROS = re.compile(r"^(ros|roscpp|tf2|tf2_ros|std_msgs|geometry_msgs|nav_msgs|asv_msgs|asv_ros)/")
 

@@ -239,7 +239,7 @@ TEST(Evaluation, DistanceToLandIsMeasuredFromTheHull) {
   RunInfo info;
   info.scenario = "land";
   info.ships = {{"own", std::nullopt, ""}};
-  info.obstacles = {{{300, 500}, {1300, 500}, {1300, 1500}, {300, 1500}}};
+  info.obstacles = {{"island", {{300, 500}, {1300, 500}, {1300, 1500}, {300, 1500}}, nullptr}};
   RunRecorder rec({}, info);
   for (int k = 0; k <= 600; ++k) {
     ShipSample own;
@@ -261,7 +261,7 @@ TEST(Evaluation, GroundingScoresZeroLikeACollision) {
   RunInfo info;
   info.scenario = "land";
   info.ships = {{"own", std::nullopt, ""}};
-  info.obstacles = {{{-500, 500}, {500, 500}, {500, 1500}, {-500, 1500}}};
+  info.obstacles = {{"island", {{-500, 500}, {500, 500}, {500, 1500}, {-500, 1500}}, nullptr}};
   RunRecorder rec({}, info);
   ShipSample own;
   own.name = "own";

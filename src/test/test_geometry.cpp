@@ -66,3 +66,19 @@ TEST(Geometry, TriangulationCoversAConcavePolygonExactly) {
   EXPECT_NEAR(area, 3.0, 1e-12);
   EXPECT_TRUE(triangulate({{0, 0}, {1, 1}}).empty());
 }
+
+TEST(Geometry, OffsetOutlineOfASquareIsTheRoundedSquare) {
+  // A 100 m square grown by 10 m: straight sides 10 m out, quarter circles at the corners; area
+  // 100^2 + 4 x 100 x 10 + pi 10^2 (by hand), the 360-gon's arcs a hair short of the circle.
+  const Polygon sq{{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+  const auto out = offsetOutline(sq, 10.0, 360);
+  ASSERT_EQ(out.size(), 1u);
+  double area2 = 0.0;
+  for (size_t i = 0, j = out[0].size() - 1; i < out[0].size(); j = i++)
+    area2 += cross2(out[0][j], out[0][i]);
+  EXPECT_NEAR(std::fabs(area2) / 2, 10000 + 4000 + M_PI * 100, 1.0);
+  const Eigen::AlignedBox2d box = boundingBox(out[0]);
+  EXPECT_NEAR(box.min().x(), -10.0, 1e-9);
+  EXPECT_NEAR(box.max().y(), 110.0, 1e-9);
+  EXPECT_TRUE(offsetOutline({{0, 0}, {1, 1}}, 10.0).empty());
+}

@@ -3,6 +3,12 @@
 #include <cmath>
 #include <limits>
 
+// GCC 12 warns inside Boost's round buffer join (a point it fills by reference): not our code.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <boost/geometry.hpp>
+#pragma GCC diagnostic pop
+
 namespace asv {
 
 bool pointInPolygon(const Polygon& poly, const Eigen::Vector2d& p) {
@@ -117,6 +123,76 @@ Polygon hullOutline(const Eigen::Vector2d& position, double heading, double leng
   const Eigen::Vector2d stbd(fwd.y(), -fwd.x());
   const Eigen::Vector2d l = 0.5 * length * fwd, b = 0.5 * beam * stbd;
   return {position + l + b, position - l + b, position - l - b, position + l - b};
+}
+
+double segmentLengthInside(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+  const size_t n = poly.size();
+  if (n < 3)
+    return 0.0;
+  const Eigen::Vector2d d = q - p;
+  const double len = d.norm();
+  if (len <= 0.0)
+    return 0.0;
+  double cuts[64];
+  std::vector<double> many;
+  size_t k = 0;
+  auto add = [&](double s) {
+    if (k < 64)
+      cuts[k++] = s;
+    else
+      many.push_back(s);
+  };
+  add(0.0);
+  add(1.0);
+  for (size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Eigen::Vector2d e = poly[i] - poly[j];
+    const double den = cross2(d, e);
+    if (std::fabs(den) < 1e-12 * len * e.norm())
+      continue;  // parallel: any overlap is caught by the midpoint tests
+    const Eigen::Vector2d ap = poly[j] - p;
+    const double s = cross2(ap, e) / den;
+    const double u = cross2(ap, d) / den;
+    if (s > 0.0 && s < 1.0 && u >= 0.0 && u <= 1.0)
+      add(s);
+  }
+  std::vector<double> all(cuts, cuts + k);
+  all.insert(all.end(), many.begin(), many.end());
+  std::sort(all.begin(), all.end());
+  double inside = 0.0;
+  for (size_t i = 1; i < all.size(); ++i) {
+    const double ds = all[i] - all[i - 1];
+    if (ds <= 0.0)
+      continue;
+    if (pointInPolygon(poly, p + d * (0.5 * (all[i] + all[i - 1]))))
+      inside += ds * len;
+  }
+  return inside;
+}
+
+std::vector<Polygon> offsetOutline(const Polygon& poly, double distance, int points_per_circle) {
+  namespace bg = boost::geometry;
+  using BPoint = bg::model::d2::point_xy<double>;
+  using BPolygon = bg::model::polygon<BPoint>;
+  BPolygon in;
+  for (const auto& v : poly)
+    in.outer().emplace_back(v.x(), v.y());
+  if (poly.size() < 3)
+    return {};
+  bg::correct(in);  // closes the ring and orients it as Boost expects
+  bg::model::multi_polygon<BPolygon> out;
+  bg::buffer(in, out, bg::strategy::buffer::distance_symmetric<double>(distance),
+             bg::strategy::buffer::side_straight(), bg::strategy::buffer::join_round(points_per_circle),
+             bg::strategy::buffer::end_round(points_per_circle), bg::strategy::buffer::point_circle(points_per_circle));
+  std::vector<Polygon> rings;
+  for (const auto& p : out) {
+    Polygon r;
+    for (const auto& v : p.outer())
+      r.emplace_back(v.x(), v.y());
+    if (r.size() > 1 && r.front() == r.back())
+      r.pop_back();
+    rings.push_back(std::move(r));
+  }
+  return rings;
 }
 
 }  // namespace asv

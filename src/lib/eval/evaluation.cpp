@@ -358,8 +358,7 @@ RunInfo RunInfo::fromScenario(const Scenario& sc, const std::string& planner, ui
   info.planner = planner.empty() ? "none" : planner;
   info.seed = seed;
   info.min_separation = sc.min_separation;
-  for (const auto& o : sc.obstacles)
-    info.obstacles.push_back(o.polygon);
+  info.obstacles = sc.obstacles;
   info.ships.push_back({sc.own.name, sc.own.goal, info.planner});
   for (const auto& t : sc.targets) {
     const bool plans = t.behaviour == Behaviour::Planner;
@@ -458,8 +457,8 @@ void RunRecorder::checkLand(size_t i, const ShipSample& s) {
     return;
   const Polygon hull = hullOutline(s.state.position, s.state.heading, std::max(0.0, s.state.length),
                                    std::max(0.0, s.beam));
-  for (const Polygon& o : info_.obstacles) {
-    const double d = polygonDistance(hull, o);
+  for (const StaticObstacle& o : info_.obstacles) {
+    const double d = polygonObstacleDistance(hull, o, min_obstacle_[i]);  // exact where it can matter
     min_obstacle_[i] = std::min(min_obstacle_[i], d);
     if (d <= 0.0)
       grounded_[i] = 1;

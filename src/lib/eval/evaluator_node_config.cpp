@@ -20,6 +20,7 @@ EvaluatorNodeConfig EvaluatorNodeConfig::fromParams(const ParamMap& p) {
   c.own_ship = p.getString("own_ship", c.own_ship);
   c.result = p.getString("result", c.result);
   c.scenario = p.getString("scenario", c.scenario);
+  c.charts = ChartOptions::fromParams(p);
   c.planner = p.getString("planner", c.planner);
   c.seed = p.getInt("seed", c.seed);
   c.time_origin = p.getDouble("time_origin", c.time_origin);

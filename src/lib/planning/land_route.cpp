@@ -38,6 +38,8 @@ void pushedVertices(const Polygon& poly, double offset, std::vector<Eigen::Vecto
     const Eigen::Vector2d& next = poly[(i + 1) % n];
     if ((v - prev).norm() < 1e-9 || (next - v).norm() < 1e-9)
       continue;
+    if (sense * cross2(v - prev, next - v) < 0.0)
+      continue;  // a reflex corner (in a bay): a shortest way round land bends only at convex ones
     const Eigen::Vector2d n1 = outward(prev, v), n2 = outward(v, next);
     const Eigen::Vector2d bis = n1 + n2;
     if (bis.norm() < 1e-9)
@@ -70,11 +72,16 @@ void gapMiddles(const std::vector<StaticObstacle>& obstacles, double clearance, 
           }
 }
 
+// `boxes`: the obstacles' bounding boxes (or none), to skip those farther than `required` cheaply.
 bool clearLeg(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::vector<StaticObstacle>& obstacles,
-              double required) {
-  for (const StaticObstacle& o : obstacles)
-    if (segmentObstacleDistance(o.polygon, a, b) < required)
+              double required, const std::vector<Eigen::AlignedBox2d>& boxes = {}) {
+  const Eigen::AlignedBox2d leg(a.cwiseMin(b), a.cwiseMax(b));
+  for (size_t k = 0; k < obstacles.size(); ++k) {
+    if (k < boxes.size() && leg.exteriorDistance(boxes[k]) >= required)
+      continue;
+    if (obstacleDistance(obstacles[k], a, b) < required)
       return false;
+  }
   return true;
 }
 
@@ -110,7 +117,7 @@ double trackObstacleDistance(const std::vector<Eigen::Vector2d>& track, const st
   double best = std::numeric_limits<double>::infinity();
   for (const StaticObstacle& o : obstacles)
     for (size_t i = 0; i < track.size() && best > 0.0; ++i)
-      best = std::min(best, segmentObstacleDistance(o.polygon, track[i], track[i + 1 < track.size() ? i + 1 : i]));
+      best = std::min(best, obstacleDistance(o, track[i], track[i + 1 < track.size() ? i + 1 : i]));
   return best;
 }
 
@@ -131,7 +138,12 @@ std::optional<std::vector<Eigen::Vector2d>> landRoute(const Eigen::Vector2d& fro
   for (const StaticObstacle& o : obstacles)
     pushedVertices(o.polygon, kNodeMargin * clearance, nodes);
   gapMiddles(obstacles, clearance, nodes);
-  // Dijkstra over the visibility graph (legs tested as they are reached).
+  std::vector<Eigen::AlignedBox2d> boxes;
+  boxes.reserve(obstacles.size());
+  for (const StaticObstacle& o : obstacles)
+    boxes.push_back(boundingBox(o.polygon));
+  // A* over the visibility graph (legs tested as they are reached), the straight distance to `to`
+  // as the heuristic: admissible and consistent, so the path is Dijkstra's, with fewer legs tested.
   const size_t n = nodes.size();
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
   std::vector<size_t> prev(n, n);
@@ -139,7 +151,7 @@ std::optional<std::vector<Eigen::Vector2d>> landRoute(const Eigen::Vector2d& fro
   using Item = std::pair<double, size_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
   dist[0] = 0.0;
-  open.push({0.0, 0});
+  open.push({(to - from).norm(), 0});
   while (!open.empty()) {
     const size_t u = open.top().second;
     open.pop();
@@ -150,11 +162,11 @@ std::optional<std::vector<Eigen::Vector2d>> landRoute(const Eigen::Vector2d& fro
       break;
     for (size_t v = 1; v < n; ++v) {
       const double d = dist[u] + (nodes[v] - nodes[u]).norm();
-      if (done[v] || d >= dist[v] || !clearLeg(nodes[u], nodes[v], obstacles, required))
+      if (done[v] || d >= dist[v] || !clearLeg(nodes[u], nodes[v], obstacles, required, boxes))
         continue;
       dist[v] = d;
       prev[v] = u;
-      open.push({d, v});
+      open.push({d + (to - nodes[v]).norm(), v});
     }
   }
   if (!done[1])

@@ -185,9 +185,10 @@ Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std
       f.course_setpoint = wrapTwoPi(own_->course + kPi / 2);
       f.speed_setpoint = cfg_.cruise_speed;
       f.message = "fallback (" + why + "): in extremis with " + t.state.id + ", hard starboard";
-      return f;
+      break;
     }
-  // Holding course onto land is no fallback: the ship stops instead (a grounding is as bad as a collision).
+  // Holding course (or turning hard) onto land is no fallback: the ship stops instead (a grounding is
+  // as bad as a collision; Rule 8(e): taking all way off is an action to avoid a collision too).
   const double required = landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
   if (required > 0.0 &&
       trackObstacleDistance(landTrack(f, own_->position, f.speed_setpoint * cfg_.prediction_horizon), obstacles_) <

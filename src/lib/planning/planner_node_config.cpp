@@ -26,6 +26,7 @@ PlannerNodeConfig PlannerNodeConfig::fromParams(const ParamMap& p) {
   c.ship = p.getString("ship", c.ship);
   c.frame_id = p.getString("frame_id", c.frame_id);
   c.scenario = p.getString("scenario", c.scenario);
+  c.charts = ChartOptions::fromParams(p);
   if (p.has("goal_x") != p.has("goal_y"))
     throw std::invalid_argument("give both goal_x and goal_y (metres, map frame)");
   c.has_goal = p.has("goal_x");

@@ -433,6 +433,50 @@ void readObstacles(const Ctx& c, const YAML::Node& root, Scenario& s) {
   }
 }
 
+// charts: where land comes from (charts.h). A chart needs the scenario's origin; its clearance_m is
+// the scenario's obstacle clearance, given here or under safety, not both.
+void readCharts(const Ctx& c, const YAML::Node& root, Scenario& s) {
+  if (!root["charts"])
+    return;
+  const YAML::Node n = root["charts"];
+  c.onlyKeys(n, "charts", {"source", "resolution", "layer", "radius_m", "simplify_m", "clearance_m"});
+  if (!s.has_origin)
+    c.fail(n, "charts", "charts need the scenario's origin (origin.lat_deg, origin.lon_deg)");
+  ChartSpec spec;
+  spec.source = c.text(n, "source", "charts.");
+  if (spec.source != "gshhg" && !spec.source.empty() && spec.source[0] != '/') {
+    const auto slash = s.source.find_last_of('/');
+    if (slash != std::string::npos)
+      spec.source = s.source.substr(0, slash + 1) + spec.source;
+  }
+  if (n["resolution"]) {
+    spec.resolution = c.text(n, "resolution", "charts.");
+    try {
+      gshhgResolutionCode(spec.resolution);
+    } catch (const ChartError& e) {
+      c.fail(n["resolution"], "charts.resolution", e.what());
+    }
+  }
+  if (n["layer"])
+    spec.layer = c.text(n, "layer", "charts.");
+  if (n["radius_m"])
+    spec.radius_m = c.number(n, "radius_m", "charts.");
+  if (!(spec.radius_m > 0.0) || spec.radius_m > 500e3)
+    c.fail(n, "charts.radius_m", "must be in (0, 500000] m");
+  if (n["simplify_m"])
+    spec.simplify_m = c.number(n, "simplify_m", "charts.");
+  if (!(spec.simplify_m >= 0.0))
+    c.fail(n, "charts.simplify_m", "must be >= 0 m");
+  if (n["clearance_m"]) {
+    if (s.min_obstacle_clearance > 0.0)
+      c.fail(n["clearance_m"], "charts.clearance_m", "the clearance is given under safety already");
+    s.min_obstacle_clearance = c.number(n, "clearance_m", "charts.");
+    if (!(s.min_obstacle_clearance > 0.0))
+      c.fail(n["clearance_m"], "charts.clearance_m", "must be > 0 m");
+  }
+  s.charts = spec;
+}
+
 // One sensor_faults entry: type, the target(s) it concerns, start and duration.
 SensorFault readSensorFault(const Ctx& c, const YAML::Node& n, const std::string& w, const Scenario& s) {
   c.onlyKeys(n, w, {"type", "ship", "with", "start_s", "duration_s"});
@@ -480,12 +524,13 @@ Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
     throw ScenarioError(source + ": a scenario file must be a YAML mapping");
   c.onlyKeys(root, "",
              {"format", "name", "description", "duration_s", "origin", "safety", "own_ship", "targets",
-              "static_obstacles", "planner_params", "sensor_faults"});
+              "static_obstacles", "charts", "planner_params", "sensor_faults"});
   Scenario s;
   s.source = source;
   readHeader(c, root, s);
   readShips(c, root, s);
   readObstacles(c, root, s);
+  readCharts(c, root, s);
   if (root["sensor_faults"]) {
     const YAML::Node fl = root["sensor_faults"];
     if (!fl.IsSequence())
@@ -523,15 +568,6 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& source) 
     throw ScenarioError(source + (e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1)) + ": " +
                         e.msg);
   }
-}
-
-Scenario loadScenario(const std::string& path) {
-  std::ifstream f(path);
-  if (!f)
-    throw ScenarioError(path + ": cannot open scenario file");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return parseScenario(ss.str(), path);
 }
 
 }  // namespace asv

@@ -61,6 +61,7 @@ void SimNodeConfig::validate() const {
 SimNodeConfig SimNodeConfig::fromParams(const ParamMap& p) {
   SimNodeConfig c;
   c.scenario = p.getString("scenario", c.scenario);
+  c.charts = ChartOptions::fromParams(p);
   c.seed = p.getSize("seed", c.seed);
   c.rate = p.getDouble("rate", c.rate);
   c.publish_clock = p.getBool("publish_clock", c.publish_clock);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "asv_core/codec/nmea_encode.h"
@@ -289,7 +290,7 @@ void Simulation::refereeLand() {
       // The boxes' distance bounds the outlines' from below: the exact test only where it can matter.
       const double bound = box.exteriorDistance(obstacle_boxes_[k]);
       const double needed = i == 0 ? min_obstacle_own_ : 0.0;
-      const double d = bound > needed ? bound : polygonDistance(outline, obstacles[k].polygon);
+      const double d = bound > needed ? bound : polygonObstacleDistance(outline, obstacles[k], needed);
       if (i == 0)
         min_obstacle_own_ = std::min(min_obstacle_own_, d);
       const bool touch = d <= 0.0;

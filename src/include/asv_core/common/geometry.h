@@ -50,6 +50,9 @@ double segmentPolygonDistance(const Polygon& poly, const Eigen::Vector2d& p, con
 // on the boundary. How far a straight leg of a track passes from an obstacle.
 double segmentObstacleDistance(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q);
 
+// Length [m] of the segment p->q inside the polygon (exact: edge crossings, then even-odd per piece).
+double segmentLengthInside(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q);
+
 // Shortest distance between the areas of two polygons: 0 when they overlap or touch (one inside the
 // other included). How far a hull outline is from land.
 double polygonDistance(const Polygon& a, const Polygon& b);
@@ -60,6 +63,10 @@ Eigen::AlignedBox2d boundingBox(const Polygon& poly);
 // Triangles covering a simple polygon (convex or concave, either sense), by ear clipping: index
 // triples into `poly`, n - 2 of them. Empty for fewer than 3 vertices. For filled drawings of land.
 std::vector<std::array<int, 3>> triangulate(const Polygon& poly);
+
+// The outline of the area within `distance` of a polygon (its clearance zone), round joins, as outer
+// rings (Boost.Geometry buffer; `points_per_circle` segments a full circle). Empty for an invalid polygon.
+std::vector<Polygon> offsetOutline(const Polygon& poly, double distance, int points_per_circle = 36);
 
 // A ship's hull outline: the length x beam rectangle centred on the reference point, along `heading`
 // [rad, nautical], corners in order (bow starboard, stern starboard, stern port, bow port).

@@ -103,7 +103,7 @@ struct RunInfo {
     std::string planner;                  // "" for traffic without a planner
   };
   std::vector<Ship> ships;  // ships[0] is the own ship; every sample lists ships by these names
-  std::vector<Polygon> obstacles;  // static obstacles (land), ENU [m]
+  std::vector<StaticObstacle> obstacles;  // static obstacles (land), ENU [m]
 
   // From a scenario: the own ship first, then the targets in file order.
   static RunInfo fromScenario(const Scenario& scenario, const std::string& planner, uint64_t seed);

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "asv_core/charts/charts.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/eval/evaluation.h"
 
@@ -13,6 +14,7 @@ struct EvaluatorNodeConfig {
   std::string own_ship = "own";  // id of the own ship in sim/ships
   std::string result;            // path of the result file ("" = do not write)
   std::string scenario;          // optional scenario file: name, goals, safety threshold, ship list
+  ChartOptions charts;           // charts, chart_cache_dir: the land of the scenario's charts
   std::string planner;           // planner name for the result ("" = from <own>/plan or the scenario)
   int seed = 1;                  // seed for the result (the run's planner/sim seed)
   double time_origin = 1.0e9;    // [s] ROS time of simulation time 0 (sim_node's epoch)

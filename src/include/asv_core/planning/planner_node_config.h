@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "asv_core/charts/charts.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/planning/plan_follower.h"
 
@@ -17,6 +18,7 @@ struct PlannerNodeConfig {
   std::string ship = "own";     // ship this node plans for (frames, plan.ship)
   std::string frame_id = "map";
   std::string scenario;  // optional scenario file: goal, static obstacles, planner_params
+  ChartOptions charts;   // charts, chart_cache_dir: the land of the scenario's charts (charts.h)
   bool has_goal = false;
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // [m] goal_x, goal_y (both or neither)
   double lockstep_time_budget = 10.0;  // [s] follower.time_budget in lockstep (the simulation waits)

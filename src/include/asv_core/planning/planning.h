@@ -4,12 +4,14 @@
 
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "asv_core/common/obstacle_index.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/common/types.h"
 #include "asv_core/risk/colregs.h"
@@ -34,7 +36,26 @@ struct PlannerTarget {
 struct StaticObstacle {
   std::string name;
   Polygon polygon;  // ENU [m], convex or concave, closed implicitly
+  // A spatial index of the polygon's edges, shared by the copies (indexObstacles builds it for
+  // coastlines); without it the queries below scan every vertex.
+  std::shared_ptr<const ObstacleIndex> index = nullptr;
 };
+
+// Polygons of at least this many vertices get an index: below it a scan is as fast (bench_land).
+constexpr size_t kIndexedObstacleVertices = 64;
+// Builds the index of every obstacle of kIndexedObstacleVertices or more vertices that has none.
+void indexObstacles(std::vector<StaticObstacle>& obstacles);
+// The geometry.h queries on one obstacle, through its index when it has one.
+bool insideObstacle(const StaticObstacle& o, const Eigen::Vector2d& p);
+double obstacleDistance(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);  // area
+double obstacleBoundaryDistance(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+double obstacleLengthInside(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+// polygonDistance from a small polygon (a hull outline) to the obstacle when it is at most `needed`;
+// otherwise any lower bound above `needed` (the cheap bound from the outline's centre, so that a ship
+// far from a coastline costs one query). With an index, the outline's edges' distances (a coastline
+// does not fit inside a hull).
+double polygonObstacleDistance(const Polygon& outline, const StaticObstacle& o,
+                               double needed = std::numeric_limits<double>::infinity());
 
 // The own ship's manoeuvring limits the planners respect.
 struct OwnShipLimits {

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "asv_core/charts/charts.h"
 #include "asv_core/common/geodesy.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/planning/planning.h"
@@ -71,7 +72,10 @@ struct Scenario {
   double min_obstacle_clearance = 0.0;
   ScenarioShip own;
   std::vector<ScenarioShip> targets;
-  std::vector<StaticObstacle> obstacles;
+  std::vector<StaticObstacle> obstacles;  // static_obstacles, then chart land (after loadCharts)
+  // The charts key: land from GSHHG or a chart file round the origin (relative file paths resolved
+  // against the scenario's folder). Its polygons join `obstacles` as "land 1", "land 2", ...
+  std::optional<ChartSpec> charts;
   std::vector<SensorFault> sensor_faults;
   ParamMap planner_params;  // flattened: nested maps become "a/b" keys
 
@@ -83,8 +87,13 @@ struct Scenario {
 // Short planner names (asv_bringup/scenarios/README.md).
 const std::vector<std::string>& knownPlanners();
 
-// Parses a scenario; `source` names the file in error messages. Throws ScenarioError.
+// Parses a scenario; `source` names the file in error messages. Throws ScenarioError. The charts key
+// is read, not loaded: see loadCharts.
 Scenario parseScenario(const std::string& yaml_text, const std::string& source = "<string>");
-Scenario loadScenario(const std::string& path);
+// Adds the land of the scenario's charts (with the options' override) to its obstacles. Throws
+// ScenarioError naming the file when the chart cannot be read or the own ship starts on land.
+void loadCharts(Scenario& s, const ChartOptions& options);
+// Reads a scenario file and loads its charts (scenario_load.cpp).
+Scenario loadScenario(const std::string& path, const ChartOptions& options = {});
 
 }  // namespace asv

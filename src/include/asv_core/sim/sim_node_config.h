@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "asv_core/charts/charts.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/sim/simulation.h"
 
@@ -14,6 +15,7 @@ namespace asv {
 
 struct SimNodeConfig {
   std::string scenario;       // path of a scenario file (format 1); required
+  ChartOptions charts;        // charts, chart_cache_dir: the land of the scenario's charts
   uint64_t seed = 1;          // NMEA noise and dropouts
   double rate = 1.0;          // real-time factor; 0 = as fast as possible
   bool publish_clock = true;  // drive /clock (the launch sets /use_sim_time)

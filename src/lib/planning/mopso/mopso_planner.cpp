@@ -212,50 +212,6 @@ double safetyViolation(double f) {
   return std::max(0.0, f);  // eq. (11)
 }
 
-double segmentLengthInside(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
-  const size_t n = poly.size();
-  if (n < 3)
-    return 0.0;
-  const Eigen::Vector2d d = q - p;
-  const double len = d.norm();
-  if (len <= 0.0)
-    return 0.0;
-  double cuts[64];
-  std::vector<double> many;
-  size_t k = 0;
-  auto add = [&](double s) {
-    if (k < 64)
-      cuts[k++] = s;
-    else
-      many.push_back(s);
-  };
-  add(0.0);
-  add(1.0);
-  for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Eigen::Vector2d e = poly[i] - poly[j];
-    const double den = cross2(d, e);
-    if (std::fabs(den) < 1e-12 * len * e.norm())
-      continue;  // parallel: any overlap is caught by the midpoint tests
-    const Eigen::Vector2d ap = poly[j] - p;
-    const double s = cross2(ap, e) / den;
-    const double u = cross2(ap, d) / den;
-    if (s > 0.0 && s < 1.0 && u >= 0.0 && u <= 1.0)
-      add(s);
-  }
-  std::vector<double> all(cuts, cuts + k);
-  all.insert(all.end(), many.begin(), many.end());
-  std::sort(all.begin(), all.end());
-  double inside = 0.0;
-  for (size_t i = 1; i < all.size(); ++i) {
-    const double ds = all[i] - all[i - 1];
-    if (ds <= 0.0)
-      continue;
-    if (pointInPolygon(poly, p + d * (0.5 * (all[i] + all[i - 1]))))
-      inside += ds * len;
-  }
-  return inside;
-}
-
 double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                      double clearance) {
   if (poly.size() < 3)
@@ -274,6 +230,15 @@ double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen:
   if (inside > 0.0)
     return inside + clearance;  // continuous with the shortfall branch, where the distance reaches 0
   return std::max(0.0, clearance - segmentPolygonDistance(poly, p, q));
+}
+
+double landViolation(const StaticObstacle& o, const Eigen::Vector2d& p, const Eigen::Vector2d& q, double clearance) {
+  if (!o.index)
+    return landViolation(o.polygon, p, q, clearance);
+  const double inside = o.index->lengthInside(p, q);
+  if (inside > 0.0)
+    return inside + clearance;
+  return std::max(0.0, clearance - o.index->boundaryDistance(p, q));
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -531,7 +496,7 @@ RuleSelection selectRule(const PlanningProblem& problem, const MopsoConfig& cfg)
     const Eigen::Vector2d a = problem.own.position;
     const Eigen::Vector2d c = problem.route.empty() ? problem.goal : problem.route.front();
     for (const StaticObstacle& o : problem.obstacles)
-      if (segmentLengthInside(o.polygon, a, c) > 0.0) {
+      if (obstacleLengthInside(o, a, c) > 0.0) {
         sel.action = HuAction::GiveWay;
         sel.reason = "static obstacle '" + o.name + "' on the route";
         return sel;
@@ -587,8 +552,8 @@ MopsoEvaluation evaluateCandidate(double alteration, double duration, const Mops
   double land = 0.0;
   if (ctx.obstacles)
     for (const StaticObstacle& o : *ctx.obstacles)
-      land += landViolation(o.polygon, path.a, path.b, cfg.land_clearance_m) +
-              landViolation(o.polygon, path.b, path.c, cfg.land_clearance_m);
+      land += landViolation(o, path.a, path.b, cfg.land_clearance_m) +
+              landViolation(o, path.b, path.c, cfg.land_clearance_m);
   if (ctx.has_bounds) {
     const Eigen::Vector2d out =
         (ctx.bounds_min - path.b).cwiseMax(0.0) + (path.b - ctx.bounds_max).cwiseMax(0.0);

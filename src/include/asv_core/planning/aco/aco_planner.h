@@ -127,6 +127,7 @@ private:
   struct Obstacle {
     Polygon polygon;
     Eigen::Vector2d lo, hi;  // bounding box
+    std::shared_ptr<const ObstacleIndex> index;  // StaticObstacle's, for coastlines
   };
   struct MovingTarget {
     Eigen::Vector2d p0, v;  // [m], [m/s] ENU position at t = 0 and velocity

@@ -137,11 +137,11 @@ double efficiencyViolation(double alteration, bool urgent,
 double durationViolation(double duration, const MopsoConfig& cfg);     // eq. (5) [s]
 double starboardViolation(double alteration, const MopsoConfig& cfg);  // eq. (6) [rad]
 double safetyViolation(double f);                                      // eq. (11): max(0, f)
-// Length [m] of the segment p->q inside the polygon (exact: edge crossings, then even-odd per piece).
-double segmentLengthInside(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q);
 // Static obstacles (Fig. 4(b)): length inside plus the shortfall from the clearance [m]; 0 = clear.
 double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                      double clearance);
+// The same through the obstacle's index when it has one (a coastline).
+double landViolation(const StaticObstacle& o, const Eigen::Vector2d& p, const Eigen::Vector2d& q, double clearance);
 
 // --- MOPSO building blocks ---
 

@@ -1,0 +1,64 @@
+// ObstacleIndex answers as the linear scans of geometry.h do (those are checked by hand in
+// test_geometry): by hand on a square with a notch, then on random star-shaped coasts against the scans.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "asv_core/common/obstacle_index.h"
+
+namespace {
+
+using asv::ObstacleIndex;
+using asv::Polygon;
+using Eigen::Vector2d;
+
+TEST(ObstacleIndex, ByHandOnASquareWithANotch) {
+  // 0..100 square with a notch cut from the top down to y = 40 between x = 40 and 60.
+  const Polygon p{{0, 0}, {100, 0}, {100, 100}, {60, 100}, {60, 40}, {40, 40}, {40, 100}, {0, 100}};
+  const ObstacleIndex idx({p});
+  EXPECT_EQ(idx.edges(), 8u);
+  EXPECT_TRUE(idx.inside({10, 10}));
+  EXPECT_FALSE(idx.inside({50, 70}));  // in the notch
+  EXPECT_TRUE(idx.inside({100, 50}));  // on the boundary
+  EXPECT_DOUBLE_EQ(idx.distance(Vector2d(50, 70)), 10.0);   // to either side of the notch
+  EXPECT_DOUBLE_EQ(idx.distance(Vector2d(50, 45)), 5.0);    // to its bottom
+  EXPECT_DOUBLE_EQ(idx.distance(Vector2d(103, 104)), 5.0);  // 3-4-5 to the corner
+  EXPECT_DOUBLE_EQ(idx.distance(Vector2d(20, 20)), 0.0);
+  // A leg down the notch's middle from above: 10 m from its sides, then 5 m above its bottom.
+  EXPECT_DOUBLE_EQ(idx.distance(Vector2d(50, 150), Vector2d(50, 45)), 5.0);
+  EXPECT_DOUBLE_EQ(idx.distance(Vector2d(-10, 50), Vector2d(110, 50)), 0.0);  // crosses
+  EXPECT_TRUE(std::isinf(ObstacleIndex().distance(Vector2d(0, 0))));
+}
+
+Polygon starCoast(std::mt19937& rng, Vector2d centre, int n) {
+  std::uniform_real_distribution<double> r(600.0, 1400.0);
+  Polygon p;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    const double rr = r(rng);
+    p.push_back(centre + rr * Vector2d(std::cos(a), std::sin(a)));
+  }
+  return p;
+}
+
+TEST(ObstacleIndex, AgreesWithTheLinearScansOnRandomCoasts) {
+  std::mt19937 rng(7);
+  const std::vector<Polygon> land{starCoast(rng, {0, 0}, 300), starCoast(rng, {2500, 500}, 200),
+                                  starCoast(rng, {1000, 2600}, 50)};
+  const ObstacleIndex idx(land);
+  std::uniform_real_distribution<double> u(-2000.0, 4500.0), l(-600.0, 600.0);
+  for (int k = 0; k < 2000; ++k) {
+    const Vector2d a(u(rng), u(rng)), b = a + Vector2d(l(rng), l(rng));
+    bool in = false;
+    double d = std::numeric_limits<double>::infinity();
+    for (const Polygon& p : land) {
+      in = in || asv::pointInPolygon(p, a);
+      d = std::min(d, asv::segmentObstacleDistance(p, a, b));
+    }
+    ASSERT_EQ(idx.inside(a), in) << a.transpose();
+    ASSERT_NEAR(idx.distance(a, b), d, 1e-9) << a.transpose() << " " << b.transpose();
+  }
+}
+
+}  // namespace
