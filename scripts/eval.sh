@@ -12,6 +12,7 @@ SEEDS=${1:-3}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$ROOT/out/eval
 BATCH=${ASV_BATCH:-$ROOT/devel/lib/asv_sim/asv_batch}
+CHART=$ROOT/devel/lib/asv_core/asv_chart
 PY=/usr/bin/python3
 ALL_PLANNERS="aco dssa dssa_plus mopso ga"
 if [ ! -x "$BATCH" ]; then echo "eval: $BATCH not built (make build)"; exit 1; fi
@@ -38,6 +39,8 @@ n=0; failed=0
 plots=()
 for job in "${jobs[@]}"; do
   f=${job%%|*}; p=${job##*|}; name=$(basename "$f" .yaml)
+  # The scenario's land (static obstacles and chart land) for the plots, once per scenario.
+  [ -e "$OUT/traj/$name.land.txt" ] || "$CHART" --scenario "$f" --local "$OUT/traj/$name.land.txt" >/dev/null
   for seed in $(seq 1 "$SEEDS"); do
     n=$((n + 1))
     traj="$OUT/traj/${name}__${p}__s${seed}.csv"

@@ -56,7 +56,7 @@ SimNodeParams loadParams(const ros::NodeHandle& pnh) {
 }
 
 SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), params_(loadParams(pnh)) {
-  sim_ = std::make_unique<asv::Simulation>(asv::loadScenario(params_.scenario), params_.sim);
+  sim_ = std::make_unique<asv::Simulation>(asv::loadScenario(params_.scenario, params_.charts), params_.sim);
   emitter_ = std::make_unique<asv::NmeaEmitter>(params_.emitter, params_.seed);
   if (params_.publish_clock)
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
@@ -288,7 +288,41 @@ void SimNode::publishLand() {
     if (!m.points.empty())
       arr.markers.push_back(m);
   }
+  addClearanceZones(arr);
   land_pub_.publish(arr);
+}
+
+// The clearance zone every planner keeps from land (the scenario's, else the plan follower's default),
+// as a dashed outline round each obstacle.
+void SimNode::addClearanceZones(visualization_msgs::MarkerArray& arr) const {
+  const double scenario_clearance = sim_->scenario().min_obstacle_clearance;
+  const double clearance =
+      scenario_clearance > 0.0 ? scenario_clearance : asv::PlanFollowerConfig{}.min_obstacle_clearance_m;
+  int id = 0;
+  for (const auto& o : sim_->scenario().obstacles) {
+    for (const auto& ring : asv::offsetOutline(o.polygon, clearance)) {
+      visualization_msgs::Marker m;
+      m.header.frame_id = "map";
+      m.header.stamp = ros::Time(kEpoch);
+      m.ns = "clearance";
+      m.id = id++;
+      m.type = visualization_msgs::Marker::LINE_LIST;  // every other segment: a dashed line
+      m.pose.orientation.w = 1.0;
+      m.scale.x = 25.0;  // [m] line width: visible at harbour zoom
+      m.color.r = 0.85f;
+      m.color.g = 0.45f;
+      m.color.b = 0.10f;
+      m.color.a = 0.9f;
+      for (size_t i = 0; i + 1 < ring.size(); i += 2)
+        for (size_t k : {i, i + 1}) {
+          geometry_msgs::Point p;
+          p.x = ring[k].x();
+          p.y = ring[k].y();
+          m.points.push_back(p);
+        }
+      arr.markers.push_back(m);
+    }
+  }
 }
 
 void SimNode::publishEvents(size_t from) {

@@ -167,3 +167,20 @@ TEST(AsvBatch, EveryPlannerGoesRoundAnIslandAndNoneRunsAground) {
     EXPECT_GT(number(o.out, "min_obstacle_distance_m"), 90.0) << planner << ": " << o.out;
   }
 }
+
+// Real land from a chart: the New York scenario's straight way cuts the Brooklyn shore (GSHHG full
+// through GMT, installed by scripts/setup). Without a planner the run is a grounding, and --charts
+// replaces the scenario's chart: with an island of a GeoJSON file 8,000 km away, nothing is land here.
+TEST(AsvBatch, ChartLandGroundsAShipWithoutAPlannerAndChartsOverridesTheSource) {
+  const std::string root = std::string(ASV_SIM_TEST_DIR) + "/../..";
+  const std::string ny = root + "/asv_bringup/scenarios/ny_upper_bay.yaml";
+  const Output none = run("--scenario " + ny + " --planner none --seed 1 --chart-cache none");
+  ASSERT_EQ(none.status, 0) << none.out;
+  EXPECT_TRUE(flag(none.out, "grounding")) << none.out;
+  const Output other = run("--scenario " + ny + " --planner none --seed 1 --chart-cache none --charts " + root +
+                           "/src/test/data/island.geojson");
+  ASSERT_EQ(other.status, 0) << other.out;
+  EXPECT_FALSE(flag(other.out, "grounding")) << other.out;
+  const Output bad = run("--scenario " + ny + " --planner none --charts /nonexistent.geojson");
+  EXPECT_EQ(bad.status, 2);
+}

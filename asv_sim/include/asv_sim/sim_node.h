@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include <asv_core/planning/plan_follower.h>
 #include <asv_core/sim/lockstep.h>
 #include <asv_core/sim/sim_node_config.h>
 #include <asv_core/sim/simulation.h>
@@ -24,6 +25,7 @@
 #include <geometry_msgs/Point.h>
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
 
 namespace asv_sim {
 
@@ -55,6 +57,7 @@ private:
   Sentences emitSensors();  // the NMEA the own ship's receivers get at this time
   void publishSensors(const Sentences& s);
   void publishLand();
+  void addClearanceZones(visualization_msgs::MarkerArray& arr) const;
   bool publishNewEvents();  // true: the run must stop (stop_on_collision)
   void lockstepStart();
   // The END event, then (shutdown_at_end) linger until the evaluator has written its result.
