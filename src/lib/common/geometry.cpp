@@ -4,10 +4,14 @@
 #include <limits>
 
 // GCC 12 warns inside Boost's round buffer join (a point it fills by reference): not our code.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <boost/geometry.hpp>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 namespace asv {
 
