@@ -26,6 +26,7 @@ const char* const kUsage =
     "all of the scenario's obstacles: its static_obstacles and its chart land.\n"
     "\n"
     "  --scenario FILE    a scenario with a charts key: its origin, own-ship start and chart settings\n"
+    "                     (--resolution, --layer, --radius, --simplify are then refused)\n"
     "  --lat, --lon DEG   the origin, without a scenario (the point itself must be water)\n"
     "  --source S         gshhg (default) or a chart file: GeoJSON, ESRI shapefile, S-57 cell (.000)\n"
     "  --resolution NAME  GSHHG: crude | low | intermediate | high (default) | full\n"
@@ -44,6 +45,7 @@ struct Args {
   double lat = 1e9, lon = 1e9;
   ChartSpec spec;
   bool source_given = false;
+  bool settings_given = false;  // --resolution, --layer, --radius or --simplify
 };
 
 bool parse(int argc, char** argv, Args& a) {
@@ -64,14 +66,19 @@ bool parse(int argc, char** argv, Args& a) {
     else if (k == "--lat" && is_num) a.lat = num;
     else if (k == "--lon" && is_num) a.lon = num;
     else if (k == "--source") a.spec.source = v, a.source_given = true;
-    else if (k == "--resolution") a.spec.resolution = v;
-    else if (k == "--layer") a.spec.layer = v;
-    else if (k == "--radius" && is_num) a.spec.radius_m = num;
-    else if (k == "--simplify" && is_num) a.spec.simplify_m = num;
+    else if (k == "--resolution") a.spec.resolution = v, a.settings_given = true;
+    else if (k == "--layer") a.spec.layer = v, a.settings_given = true;
+    else if (k == "--radius" && is_num) a.spec.radius_m = num, a.settings_given = true;
+    else if (k == "--simplify" && is_num) a.spec.simplify_m = num, a.settings_given = true;
     else if (k == "--cache") a.cache = v;
     else if (k == "--geojson") a.geojson = v;
     else if (k == "--local") a.local = v;
     else return false;
+  }
+  if (!a.scenario.empty() && a.settings_given) {
+    std::cerr << "asv_chart: with --scenario the chart settings are the scenario's charts key; only "
+                 "--source and --cache apply\n";
+    return false;
   }
   return !a.scenario.empty() || (validLatLon(a.lat, a.lon));
 }

@@ -269,7 +269,7 @@ bool readCache(const std::string& path, const std::string& key, std::vector<Poly
   std::string word;
   size_t n = 0;
   while (f >> word >> n) {
-    if (word != "polygon")
+    if (word != "polygon" || n > 10000000)
       return false;
     Polygon p(n);
     for (auto& v : p)
@@ -340,14 +340,7 @@ std::string chartCachePath(const ChartSpec& spec, const LocalFrame& frame, const
 }
 
 std::vector<Polygon> loadChartLand(const ChartSpec& spec, const LocalFrame& frame, const Eigen::Vector2d& water) {
-  if (spec.source.empty())
-    throw ChartError("charts: no source (gshhg or a chart file)");
-  if (!(spec.radius_m > 0.0) || spec.radius_m > 500e3)
-    throw ChartError("charts: radius_m must be in (0, 500000] m");
-  if (!(spec.simplify_m >= 0.0))
-    throw ChartError("charts: simplify_m must be >= 0 m");
-  if (spec.source == "gshhg")
-    gshhgResolutionCode(spec.resolution);  // a bad name fails before the cache is looked at
+  spec.validate();  // before the cache is looked at
   const std::string key = cacheKey(spec, frame, water);
   const std::string path = chartCachePath(spec, frame, water);
   std::vector<Polygon> land;

@@ -461,12 +461,13 @@ void readCharts(const Ctx& c, const YAML::Node& root, Scenario& s) {
     spec.layer = c.text(n, "layer", "charts.");
   if (n["radius_m"])
     spec.radius_m = c.number(n, "radius_m", "charts.");
-  if (!(spec.radius_m > 0.0) || spec.radius_m > 500e3)
-    c.fail(n, "charts.radius_m", "must be in (0, 500000] m");
   if (n["simplify_m"])
     spec.simplify_m = c.number(n, "simplify_m", "charts.");
-  if (!(spec.simplify_m >= 0.0))
-    c.fail(n, "charts.simplify_m", "must be >= 0 m");
+  try {
+    spec.validate();  // the loader's own rule (charts.h): radius_m, simplify_m
+  } catch (const ChartError& e) {
+    c.fail(n, "charts", e.what());
+  }
   if (n["clearance_m"]) {
     if (s.min_obstacle_clearance > 0.0)
       c.fail(n["clearance_m"], "charts.clearance_m", "the clearance is given under safety already");

@@ -36,6 +36,10 @@ struct ChartSpec {
   double simplify_m = 10.0;
   // Where extractions are cached (one file per source, area and settings); empty: no cache.
   std::string cache_dir;
+
+  // ChartError naming the setting that is out of range (inline: the scenario parser checks a
+  // charts key without linking GDAL).
+  void validate() const;
 };
 
 // How a program loads the charts a scenario names: the launch argument `charts` and asv_batch's
@@ -74,5 +78,16 @@ std::string chartCachePath(const ChartSpec& spec, const LocalFrame& frame, const
 
 // The default cache folder: $ASV_CHART_CACHE, else $XDG_CACHE_HOME/asv/charts, else ~/.cache/asv/charts.
 std::string defaultChartCacheDir();
+
+inline void ChartSpec::validate() const {
+  if (source.empty())
+    throw ChartError("charts: no source (gshhg or a chart file)");
+  if (!(radius_m > 0.0) || radius_m > 500e3)
+    throw ChartError("charts: radius_m must be in (0, 500000] m");
+  if (!(simplify_m >= 0.0))
+    throw ChartError("charts: simplify_m must be >= 0 m");
+  if (source == "gshhg")
+    gshhgResolutionCode(resolution);
+}
 
 }  // namespace asv

@@ -133,8 +133,7 @@ AcoEnvironment::AcoEnvironment(const PlanningProblem& problem, const HexagonDoma
     if (o.polygon.size() < 2)
       continue;
     Obstacle ob;
-    ob.polygon = o.polygon;
-    ob.index = o.index;
+    ob.shape = o;
     ob.lo = ob.hi = o.polygon.front();
     for (const auto& v : o.polygon) {
       ob.lo = ob.lo.cwiseMin(v);
@@ -166,7 +165,7 @@ int AcoEnvironment::obstacleAt(const Eigen::Vector2d& p) const {
     const auto& o = obstacles_[i];
     if (p.x() < o.lo.x() || p.y() < o.lo.y() || p.x() > o.hi.x() || p.y() > o.hi.y())
       continue;
-    if (o.index ? o.index->inside(p) : pointInPolygon(o.polygon, p))
+    if (insideObstacle(o.shape, p))
       return static_cast<int>(i);
   }
   return -1;
@@ -187,14 +186,15 @@ bool AcoEnvironment::segmentStaticFree(const Eigen::Vector2d& a, const Eigen::Ve
   for (const auto& o : obstacles_) {
     if (hi.x() < o.lo.x() || hi.y() < o.lo.y() || lo.x() > o.hi.x() || lo.y() > o.hi.y())
       continue;
-    if (o.index) {
-      if (o.index->boundaryDistance(a, b) <= 0.0)
+    if (o.shape.index) {
+      if (obstacleBoundaryDistance(o.shape, a, b) <= 0.0)
         return false;
       continue;
     }
-    const size_t n = o.polygon.size();
+    const Polygon& poly = o.shape.polygon;
+    const size_t n = poly.size();
     for (size_t i = 0, j = n - 1; i < n; j = i++)
-      if (segmentsIntersect(a, b, o.polygon[j], o.polygon[i]))
+      if (segmentsIntersect(a, b, poly[j], poly[i]))
         return false;
   }
   return true;

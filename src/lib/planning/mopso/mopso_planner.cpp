@@ -212,6 +212,16 @@ double safetyViolation(double f) {
   return std::max(0.0, f);  // eq. (11)
 }
 
+namespace {
+// The length inside plus the clearance, or else the shortfall from it: continuous where the distance
+// reaches 0. The distance is only asked for when nothing is inside.
+template <class Inside, class Distance>
+double violation(double clearance, Inside inside, Distance distance) {
+  const double in = inside();
+  return in > 0.0 ? in + clearance : std::max(0.0, clearance - distance());
+}
+}  // namespace
+
 double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                      double clearance) {
   if (poly.size() < 3)
@@ -226,19 +236,15 @@ double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen:
   if (slo.x() > hi.x() + clearance || shi.x() < lo.x() - clearance || slo.y() > hi.y() + clearance ||
       shi.y() < lo.y() - clearance)
     return 0.0;
-  const double inside = segmentLengthInside(poly, p, q);
-  if (inside > 0.0)
-    return inside + clearance;  // continuous with the shortfall branch, where the distance reaches 0
-  return std::max(0.0, clearance - segmentPolygonDistance(poly, p, q));
+  return violation(clearance, [&] { return segmentLengthInside(poly, p, q); },
+                   [&] { return segmentPolygonDistance(poly, p, q); });
 }
 
 double landViolation(const StaticObstacle& o, const Eigen::Vector2d& p, const Eigen::Vector2d& q, double clearance) {
   if (!o.index)
-    return landViolation(o.polygon, p, q, clearance);
-  const double inside = o.index->lengthInside(p, q);
-  if (inside > 0.0)
-    return inside + clearance;
-  return std::max(0.0, clearance - o.index->boundaryDistance(p, q));
+    return landViolation(o.polygon, p, q, clearance);  // with its cheap box reject
+  return violation(clearance, [&] { return o.index->lengthInside(p, q); },
+                   [&] { return o.index->boundaryDistance(p, q); });
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -125,9 +125,8 @@ public:
 
 private:
   struct Obstacle {
-    Polygon polygon;
+    StaticObstacle shape;    // with its index, for coastlines
     Eigen::Vector2d lo, hi;  // bounding box
-    std::shared_ptr<const ObstacleIndex> index;  // StaticObstacle's, for coastlines
   };
   struct MovingTarget {
     Eigen::Vector2d p0, v;  // [m], [m/s] ENU position at t = 0 and velocity
