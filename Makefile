@@ -19,7 +19,7 @@ CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_CXX_FLAGS="$(CXXFLAGS_EXTRA)"
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test bench demo clean format lint eval eval-ros dssa-results soak test-asan fuzz-long
+.PHONY: help setup build test bench benchmark demo clean format lint eval eval-ros dssa-results soak test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
@@ -28,6 +28,7 @@ help:
 	@echo "  make build   build the catkin workspace (build/, devel/)"
 	@echo "  make bench   run the Google Benchmark executables, JSON into out/bench/"
 	@echo "  make eval    every scenario with every planner through asv_batch (out/eval/)"
+	@echo "  make benchmark  generated situations (tuning and test seed ranges) x every planner: out/benchmark/"
 	@echo "  make eval-ros  the same pairs through the ROS pipeline in lockstep against asv_batch (out/eval_ros/)"
 	@echo "  make dssa-results  the DSSA paper's three experiments through asv_batch -> docs/results/dssa.md"
 	@echo "  make soak    2 simulated hours, 50 ships, the whole ROS pipeline: memory and rates (out/soak/)"
@@ -100,6 +101,13 @@ lint: build
 SEEDS ?= 3
 eval: build
 	@$(DEVEL) && scripts/eval.sh $(SEEDS)
+
+# Monte-Carlo benchmark (scripts/benchmark.py, docs/evaluation.md): asv_scenario_gen situations of a tuning
+# and a test seed range x every planner through asv_batch under GNU parallel; out/benchmark/report.md,
+# summary.json and plots. BENCHMARK_ARGS="--situations 90 --planners ga" narrows it.
+BENCHMARK_ARGS ?=
+benchmark: build
+	@$(DEVEL) && scripts/benchmark.py $(BENCHMARK_ARGS)
 
 # Batch and ROS agree (scripts/eval_ros.py): every scenario/planner pair once through scenario.launch
 # lockstep:=true and once through asv_batch; out/eval_ros/report.md, exit 1 on a disagreement.

@@ -117,6 +117,13 @@ TEST(Simulation, GiveWayTargetTurnsToStarboardNonCompliantStandsOn) {
   run(nc, 700.0);
   EXPECT_NEAR(nc.find("nc")->cog(), degToRad(90.0), 1e-9);
   EXPECT_TRUE(nc.collided());
+  // port_turn: the same alteration to the other side, 090 - 40 = 050, towards the own ship's track ahead.
+  Simulation pt(
+      parseScenario(scenarioYaml("  - {name: pt, position: {x_m: -3000, y_m: 3000}, course_deg: 90, "
+                                 "speed_mps: 5, behaviour: port_turn}\n")));
+  run(pt, 60.0);
+  EXPECT_TRUE(pt.find("pt")->giving_way);
+  EXPECT_NEAR(radToDeg(pt.find("pt")->course_sp), 50.0, 1e-9);
 }
 
 TEST(Simulation, OwnShipWithoutPlannerSteersForItsGoalAndArrives) {

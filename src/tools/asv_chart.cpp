@@ -10,6 +10,7 @@
 
 #include "asv_core/charts/charts.h"
 #include "asv_core/sim/scenario.h"
+#include "tool_main.h"
 
 namespace {
 
@@ -149,15 +150,5 @@ int run(const Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Args a;
-  if (!parse(argc, argv, a)) {
-    std::cerr << kUsage;
-    return 2;
-  }
-  try {
-    return run(a);
-  } catch (const std::exception& e) {
-    std::cerr << "asv_chart: " << e.what() << '\n';
-    return 1;
-  }
+  return toolMain<Args>("asv_chart", kUsage, argc, argv, parse, run);
 }

@@ -262,11 +262,13 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
       s.behaviour = Behaviour::GiveWay;
     else if (b == "non_compliant")
       s.behaviour = Behaviour::NonCompliant;
+    else if (b == "port_turn")
+      s.behaviour = Behaviour::PortTurn;
     else if (b == "planner")
       s.behaviour = Behaviour::Planner;
     else
       c.fail(n["behaviour"], w + "behaviour",
-             "must be constant, waypoints, give_way, non_compliant or planner");
+             "must be constant, waypoints, give_way, non_compliant, port_turn or planner");
     if (s.behaviour == Behaviour::Waypoints) {
       const YAML::Node wps = n["waypoints"];
       if (!wps || !wps.IsSequence() || wps.size() == 0)
@@ -298,6 +300,8 @@ const char* toString(Behaviour b) {
       return "give_way";
     case Behaviour::NonCompliant:
       return "non_compliant";
+    case Behaviour::PortTurn:
+      return "port_turn";
     case Behaviour::Planner:
       return "planner";
     case Behaviour::Constant:

@@ -164,7 +164,9 @@ bool Simulation::setWaypoints(const std::string& ship, const std::vector<Eigen::
 }
 
 void Simulation::giveWayLogic(SimVessel& v, size_t index) {
-  const double alteration = degToRad(cfg_.traffic.give_way_alteration_deg);
+  // A port_turn ship makes the same alteration to port.
+  const double side = v.behaviour == Behaviour::PortTurn ? -1.0 : 1.0;
+  const double alteration = side * degToRad(cfg_.traffic.give_way_alteration_deg);
   ShipState me = v.shipState();
   if (v.giving_way) {
     // Stand back on once the other ship is past: judged on the original course, so the ship does not
@@ -220,6 +222,7 @@ void Simulation::steer(SimVessel& v) {
   }
   switch (v.behaviour) {
     case Behaviour::GiveWay:
+    case Behaviour::PortTurn:
       giveWayLogic(v, static_cast<size_t>(&v - vessels_.data()));
       break;
     case Behaviour::Planner:

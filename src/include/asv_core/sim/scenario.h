@@ -22,7 +22,9 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-enum class Behaviour : uint8_t { Constant, Waypoints, GiveWay, NonCompliant, Planner };
+// NonCompliant: a give-way ship that stands on; PortTurn: a give-way ship that alters to port (the
+// classic error of Rules 14/15). Both are the rule-breakers of generated traffic.
+enum class Behaviour : uint8_t { Constant, Waypoints, GiveWay, NonCompliant, PortTurn, Planner };
 const char* toString(Behaviour b);
 
 struct ScenarioShip {

@@ -1,0 +1,95 @@
+#include "asv_core/sim/scenario_write.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "asv_core/common/units.h"
+
+namespace asv {
+namespace {
+
+// printf into a string; every number of the file goes through here, so its rounding is one rule.
+template <typename... Args>
+std::string fmt(const char* format, Args... args) {
+  char buf[128];
+  std::snprintf(buf, sizeof(buf), format, args...);
+  return buf;
+}
+
+// A YAML double-quoted scalar: descriptions and names may hold any character.
+std::string quoted(const std::string& text) {
+  std::string q = "\"";
+  for (char ch : text) {
+    if (ch == '"' || ch == '\\')
+      q += '\\';
+    q += ch == '\n' ? ' ' : ch;
+  }
+  return q + "\"";
+}
+
+std::string point(const Eigen::Vector2d& p) {
+  return fmt("{x_m: %.1f, y_m: %.1f}", p.x(), p.y());
+}
+
+void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const std::string& indent) {
+  if (!s.waypoints.empty())
+    throw std::invalid_argument("scenarioToYaml: waypoints are not written (ship " + s.name + ")");
+  const std::string in = indent + "  ";
+  out << indent << (own ? "" : "- ") << "name: " << s.name << "\n";
+  const std::string i = own ? indent : in;
+  if (s.mmsi != 0)
+    out << i << "mmsi: " << s.mmsi << "\n";
+  out << i << "model: " << s.model << "\n";
+  if (s.ais_class != 'A')
+    out << i << "ais_class: " << s.ais_class << "\n";
+  if (s.length > 0.0)
+    out << i << fmt("length_m: %.1f\n", s.length);
+  if (s.beam > 0.0)
+    out << i << fmt("beam_m: %.1f\n", s.beam);
+  out << i << "position: " << point(s.position) << "\n";
+  out << i << fmt("course_deg: %.1f\n", wrapDeg360(radToDeg(s.course)));
+  out << i << fmt("speed_kn: %.2f\n", mpsToKnots(s.speed));
+  if (s.goal)
+    out << i << "goal: " << point(*s.goal) << "\n";
+  if (s.goal_radius > 0.0)
+    out << i << fmt("goal_radius_m: %.1f\n", s.goal_radius);
+  if (!s.planner.empty())
+    out << i << "planner: " << s.planner << "\n";
+  if (!own)
+    out << i << "behaviour: " << toString(s.behaviour) << "\n";
+}
+
+}  // namespace
+
+std::string scenarioToYaml(const Scenario& s) {
+  if (s.charts || !s.sensor_faults.empty() || !s.planner_params.values().empty())
+    throw std::invalid_argument("scenarioToYaml: charts, sensor_faults and planner_params are not written");
+  std::ostringstream out;
+  out << "format: 1\nname: " << s.name << "\n";
+  if (!s.description.empty())
+    out << "description: " << quoted(s.description) << "\n";
+  out << fmt("duration_s: %.0f\n", s.duration);
+  if (s.has_origin)
+    out << fmt("origin: {lat_deg: %.7f, lon_deg: %.7f}\n", s.origin.lat_deg, s.origin.lon_deg);
+  out << fmt("safety: {min_separation_m: %.1f", s.min_separation);
+  if (s.min_obstacle_clearance > 0.0)
+    out << fmt(", min_obstacle_clearance_m: %.1f", s.min_obstacle_clearance);
+  out << "}\nown_ship:\n";
+  writeShip(out, s.own, true, "  ");
+  if (!s.targets.empty())
+    out << "targets:\n";
+  for (const auto& t : s.targets)
+    writeShip(out, t, false, "  ");
+  if (!s.obstacles.empty())
+    out << "static_obstacles:\n";
+  for (const auto& o : s.obstacles) {
+    out << "  - name: " << quoted(o.name) << "\n    polygon:\n";
+    for (const auto& p : o.polygon)
+      out << "      - " << point(p) << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace asv
