@@ -9,6 +9,7 @@
 
 #include "asv_core/papers/lazarowska_scenarios.h"
 #include "asv_core/planning/aco/aco_planner.h"
+#include "planner_target.h"
 
 using namespace asv;
 
@@ -26,12 +27,7 @@ PlanningProblem openSea(double own_course_deg, double speed, const Eigen::Vector
 }
 
 PlannerTarget target(const std::string& id, const Eigen::Vector2d& pos, double course_deg, double speed) {
-  PlannerTarget t;
-  t.state.id = id;
-  t.state.position = pos;
-  t.state.course = t.state.heading = degToRad(course_deg);
-  t.state.speed = speed;
-  return t;
+  return plannerTarget(id, pos, course_deg, speed);
 }
 
 StaticObstacle box(const std::string& name, double x0, double y0, double x1, double y1) {

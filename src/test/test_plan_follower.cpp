@@ -194,6 +194,7 @@ asv::Plan waypointPlan(const std::vector<Eigen::Vector2d>& points) {
 TEST(PlanUnderSharedRules, APlanOverLandIsRefusedAndReplanned) {
   asv::PlanningProblem pr;
   pr.own = own();
+  pr.goal = {0.0, 4000.0};  // behind the island: a plan is judged on its way there
   pr.seed = 7;
   pr.obstacles = {island()};
   pr.min_obstacle_clearance = 185.2;

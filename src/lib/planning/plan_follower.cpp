@@ -8,6 +8,7 @@
 #include "asv_core/common/geometry.h"
 #include "asv_core/common/units.h"
 #include "asv_core/planning/land_route.h"
+#include "asv_core/planning/safety_net.h"
 
 namespace asv {
 
@@ -83,51 +84,108 @@ bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {
 
 namespace {
 
-// The plan keeps clear of land (plans that are not Ok are the follower's to handle).
+// The plan keeps clear of land (plans that are not Ok are the follower's to handle), flown as the
+// follower and later plans fly it (planRoute).
 bool clearOfLand(const Plan& plan, const PlanningProblem& problem, double required) {
-  if (!(required > 0.0) || plan.status != PlanStatus::Ok)
-    return true;
-  const double reach = std::max(problem.own.speed, 0.5) * problem.prediction_horizon;
-  const auto track = landTrack(plan, problem.own.position, reach);
-  return trackObstacleDistance(track, problem.obstacles) >= required;
+  return plan.status != PlanStatus::Ok || routeKeepsOffLand(planRoute(plan, problem), problem, required);
 }
+
+}  // namespace
+
+namespace {
+
+// Why a plan breaks a shared rule, or "" when it keeps them all.
+struct RuleCheck {
+  const PlanningProblem& problem;
+  double land_required = 0.0;
+  bool give_way = false;
+
+  std::string broken(const Plan& p) const {
+    if (!clearOfLand(p, problem, land_required))
+      return "came within " + std::to_string(static_cast<int>(land_required)) + " m of land";
+    // The minimum itself: the planners aim at kSeparationMargin x it (planning.h), and so does the
+    // separation manoeuvre, so a plan a little under their aim is still kept.
+    const double wanted = problem.min_separation;
+    if (p.status == PlanStatus::Ok && wanted > 0.0) {
+      const double sep = planSeparation(p, problem);
+      if (sep < wanted)
+        return "passed " + std::to_string(static_cast<int>(sep)) + " m from a ship, under " +
+               std::to_string(static_cast<int>(wanted)) + " m";
+    }
+    if (p.status == PlanStatus::Ok && closesStandOn(p))
+      return kClosesStandOn;
+    if (give_way && firstAlterationToPort(p, problem))
+      return "altered to port, Rules 14/15";
+    return "";
+  }
+
+  // Rule 17(a)(i): the plan takes the ship closer to a ship she stands on for than holding course and
+  // speed would, and inside the minimum separation.
+  bool closesStandOn(const Plan& p) const {
+    if (problem.stand_on_for.empty() || !(problem.min_separation > 0.0))
+      return false;
+    PlanningProblem watched = problem;
+    watched.targets = problem.stand_on_for;
+    const double planned = planSeparation(p, watched);
+    return planned < kSeparationMargin * problem.min_separation &&
+           planned < planSeparation(holdCoursePlan(problem, problem.stand_on_for), watched) - 1.0;
+  }
+  static constexpr const char* kClosesStandOn = "closed a ship the own ship stands on for, Rule 17(a)(i)";
+};
 
 }  // namespace
 
 Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries) {
-  const double required =
+  RuleCheck check{problem};
+  check.land_required =
       landRequirement(problem.own.position, problem.goal, problem.obstacles, problem.min_obstacle_clearance);
-  bool give_way = false;
   for (const auto& t : problem.targets)
-    give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
-  auto toPort = [&](const Plan& p) { return give_way && firstAlterationToPort(p, problem); };
+    check.give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
   Plan first = make(problem);
-  const bool first_clear = clearOfLand(first, problem, required);
-  if (first_clear && !toPort(first))
+  const std::string why = check.broken(first);
+  const bool separation_net = problem.min_separation > 0.0 && !problem.targets.empty();
+  if (why.empty() && (first.status != PlanStatus::NoSolution || !separation_net))
     return first;
-  const std::string why = first_clear ? "the first plan altered to port, Rules 14/15"
-                                      : "the first plan came within " +
-                                            std::to_string(static_cast<int>(required)) + " m of land";
+  if (first.status == PlanStatus::NoSolution) {  // the net instead of the follower's blind fallback
+    Plan net = separationManoeuvre(problem, check.land_required, "no solution: " + first.message);
+    net.compute_time = first.compute_time;
+    return net;
+  }
+  if (why == RuleCheck::kClosesStandOn) {  // the planner cannot know: stand on until she is past
+    Plan hold = holdCoursePlan(problem, problem.stand_on_for);
+    if (check.broken(hold).empty()) {
+      hold.compute_time = first.compute_time;
+      hold.message = "stand on (Rule 17(a)(i)): the plan (" + first.message + ") " + why;
+      return hold;
+    }
+  }
+  const PlanningProblem original = problem;
   for (int k = 1; k <= retries; ++k) {
     problem.seed += 0x9E3779B9ULL * static_cast<uint64_t>(k);
     Plan again = make(problem);
-    if (clearOfLand(again, problem, required) && !toPort(again)) {
-      again.message += " (retry " + std::to_string(k) + ": " + why + ")";
+    if (check.broken(again).empty()) {
+      again.message += " (retry " + std::to_string(k) + ": the first plan " + why + ")";
       again.compute_time += first.compute_time;
       return again;
     }
   }
-  if (first_clear) {
+  // The rules in order of weight: land and separation are safety, a port alteration is a rule finding.
+  if (why.rfind("altered to port", 0) == 0) {
     first.message += " (port alteration kept: no starboard plan in " + std::to_string(retries) + " retries)";
     return first;
   }
-  Plan none;
-  none.status = PlanStatus::NoSolution;
-  none.compute_time = first.compute_time;
-  none.message = "every plan in " + std::to_string(retries + 1) + " tries came within " +
-                 std::to_string(static_cast<int>(required)) + " m of land";
-  return none;
+  if (!separation_net) {  // land alone: the follower's fallback stops rather than run aground
+    Plan none;
+    none.status = PlanStatus::NoSolution;
+    none.compute_time = first.compute_time;
+    none.message = "every plan in " + std::to_string(retries + 1) + " tries " + why;
+    return none;
+  }
+  Plan net = separationManoeuvre(original, check.land_required,
+                                 "every plan in " + std::to_string(retries + 1) + " tries " + why);
+  net.compute_time = first.compute_time;
+  return net;
 }
 
 PlanFollower::PlanFollower(const PlanFollowerConfig& config) : cfg_(config) {
@@ -165,8 +223,10 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
       continue;
     // Rule 17(a)(i): the stand-on ship keeps course and speed while the give-way ship is expected to
     // act (Hu's compliance flag) and the situation is not yet urgent (17(a)(ii), 17(b): then it acts).
-    if (cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent)
+    if (cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent) {
+      pr.stand_on_for.push_back(t);
       continue;
+    }
     pr.targets.push_back(t);
   }
   return pr;
@@ -200,40 +260,29 @@ Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std
 }
 
 double PlanFollower::predictedClearance(const std::vector<PlannerTarget>& targets) const {
-  // The rest of the current plan flown at its speed from where the ship is now, against every target
-  // holding its course and speed: the smallest distance over the next prediction_horizon.
+  // The rest of the current plan flown from where the ship is now, as setpoint() flies it (then
+  // straight for the goal), against every target holding its course and speed.
   if (!own_ || targets.empty())
     return 1e12;
-  std::vector<Eigen::Vector2d> route{own_->position};
-  for (size_t i = wp_index_; i < plan_.waypoints.size(); ++i)
-    route.push_back(plan_.waypoints[i].position);
-  if (plan_.waypoints.size() < 2 || plan_.status == PlanStatus::Fallback)
-    route.push_back(own_->position + courseSpeedToVelocity(course_sp_, 1e5));
-  const double speed = std::max(0.1, speed_sp_ > 0.0 ? speed_sp_ : cfg_.cruise_speed);
-  const double dt = 5.0;
-  double best = 1e12;
-  size_t leg = 1;
-  Eigen::Vector2d p = route[0];
-  for (double t = 0.0; t <= cfg_.prediction_horizon && leg < route.size(); t += dt) {
-    for (const auto& tg : targets) {
-      if (tg.state.id == own_->id)
-        continue;
-      const Eigen::Vector2d q = tg.state.position + tg.state.velocity() * t;
-      best = std::min(best, (q - p).norm());
+  const double cruise = std::max(0.1, speed_sp_ > 0.0 ? speed_sp_ : cfg_.cruise_speed);
+  PredictedRoute route{{own_->position}, {}};
+  if (plan_.waypoints.size() < 2 || plan_.status == PlanStatus::Fallback) {
+    route.points.push_back(own_->position + courseSpeedToVelocity(course_sp_, 1e5));
+    route.speeds.push_back(cruise);
+  } else {
+    for (size_t i = wp_index_; i < plan_.waypoints.size(); ++i) {
+      route.points.push_back(plan_.waypoints[i].position);
+      route.speeds.push_back(plan_.waypoints[i].speed > 0.0 ? plan_.waypoints[i].speed : cruise);
     }
-    double step = speed * dt;
-    while (step > 0.0 && leg < route.size()) {
-      const Eigen::Vector2d d = route[leg] - p;
-      if (d.norm() <= step) {
-        step -= d.norm();
-        p = route[leg++];
-      } else {
-        p += d.normalized() * step;
-        step = 0.0;
-      }
-    }
+    route.points.push_back(goalOrAhead());
+    route.speeds.push_back(plan_.speed_setpoint > 0.0 ? plan_.speed_setpoint : cfg_.cruise_speed);
+    route.ends_at_goal = goal_.has_value();
   }
-  return best;
+  std::vector<PlannerTarget> others;
+  for (const auto& t : targets)
+    if (t.state.id != own_->id)
+      others.push_back(t);
+  return std::min(1e12, routeClearance(route, others, cfg_.prediction_horizon));
 }
 
 bool PlanFollower::landAhead() const {

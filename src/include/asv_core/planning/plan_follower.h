@@ -6,7 +6,8 @@
 //  - a plan that fails (NoSolution or an exception) becomes the fallback: hold course at a fraction of
 //    the speed, or hard to starboard when an urgent target is within extremis_range (Rules 17(b), 2(b)),
 //    or stopped when that course would take the ship onto land;
-//  - no plan may bring the ship closer to land than min_obstacle_clearance_m (planUnderSharedRules);
+//  - no plan may bring the ship closer to land than min_obstacle_clearance_m, or pass a target closer than
+//    the minimum separation when another plan or the separation manoeuvre keeps it (planUnderSharedRules);
 //  - set-points steer for the next plan waypoint not yet within waypoint_acceptance, then for the goal.
 // Times are the caller's clock (simulation or ROS time) in seconds.
 #pragma once
@@ -57,6 +58,9 @@ struct PlanFollowerConfig {
 //  - land: a plan whose track (landTrack) comes closer to a static obstacle than landRequirement()
 //    allows. If none keeps clear, the result is NoSolution (the follower's fallback, which stops
 //    rather than run aground);
+//  - separation (safety_net.h): with a minimum separation and targets, a plan predicted to pass one of
+//    the problem's targets closer than min_separation. If none keeps it, or the planner finds no
+//    solution, the separation manoeuvre (separationManoeuvre) is flown instead;
 //  - Rules 14 and 15: when the own ship gives way in a head-on or crossing encounter (a target of the
 //    problem with that encounter), a first alteration more than 5 deg to port. If none complies, the
 //    first plan is kept with a note in its message.

@@ -74,6 +74,10 @@ struct PlanningProblem {
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // [m] final waypoint (ENU)
   std::vector<Eigen::Vector2d> route;  // [m] waypoints still to pass before the goal (may be empty)
   std::vector<PlannerTarget> targets;
+  // Targets the own ship stands on for (Rule 17(a)(i): left out of `targets` while the give-way ship is
+  // expected to act). Not for the planners: the shared rules refuse a plan that closes them more than
+  // holding course would (planUnderSharedRules).
+  std::vector<PlannerTarget> stand_on_for;
   std::vector<StaticObstacle> obstacles;
   bool has_bounds = false;  // environment boundaries (Lazarowska eq. 1-3)
   Eigen::Vector2d bounds_min = Eigen::Vector2d::Zero(), bounds_max = Eigen::Vector2d::Zero();  // [m]

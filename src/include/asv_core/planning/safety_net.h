@@ -1,0 +1,64 @@
+// The separation rule every planner's plan must keep at sea, whatever the algorithm (a sea-mode rule of
+// ours, not any paper's): a plan predicted to pass a target closer than the situation's minimum
+// separation is refused, and when no plan of the planner keeps it, a simple manoeuvre that does is
+// flown instead (planUnderSharedRules, plan_follower.h). Predictions are kinematic: the own ship flies
+// the plan's route at the plan's speed, every target holds its course and speed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "asv_core/planning/planning.h"
+
+namespace asv {
+
+// A way the own ship is predicted to go: from points[0] through the others, leg i (points[i] to
+// points[i + 1]) at speeds[i] [m/s].
+struct PredictedRoute {
+  std::vector<Eigen::Vector2d> points;
+  std::vector<double> speeds;
+  bool ends_at_goal = false;  // the last point is the goal: there the ship has arrived and left the scene
+};
+
+// The smallest distance between the own ship flying `route` and any target over `horizon` seconds,
+// sampled every `dt`; the own ship stays at the route's end once there, unless that end is the goal
+// (an arrived ship is out of every encounter). Infinity without targets.
+double routeClearance(const PredictedRoute& route, const std::vector<PlannerTarget>& targets, double horizon,
+                      double dt = 5.0);
+
+// The way the plan follower flies a plan (PlanFollower::setpoint): from the own position through its
+// waypoints at their speeds; then, as later plans will, through the rest of the problem's land route
+// (from the route point nearest the plan's end) and to the goal, at the plan's speed set-point (the
+// own speed when it has none). A plan without waypoints: its course and speed set-points over the
+// reach of the prediction horizon.
+PredictedRoute planRoute(const Plan& plan, const PlanningProblem& problem);
+
+// The track a ship with `limits` (turn rate, turn delay ignored) flies along `route` from `heading`:
+// she turns at most turn_rate towards the next point, which she passes within `acceptance`, every
+// `dt` seconds, for `reach` metres or until the last point. A sharp turn at a waypoint swings her out
+// by about her turning radius (speed / turn rate), which the straight legs leave out.
+std::vector<Eigen::Vector2d> flownTrack(const PredictedRoute& route, double heading, const OwnShipLimits& limits,
+                                        double reach, double acceptance = 150.0, double dt = 2.0);
+
+// Whether the route keeps `required` off the problem's obstacles as planned, and half of it as flown
+// (flownTrack from the own heading: corners cut, sharp turns swung out), over the reach of the
+// prediction horizon. True when nothing is required.
+bool routeKeepsOffLand(const PredictedRoute& route, const PlanningProblem& problem, double required);
+
+// The predicted smallest distance of a plan to the problem's targets (infinity without targets).
+double planSeparation(const Plan& plan, const PlanningProblem& problem);
+
+// Hold course and speed until every ship of `until_past` has passed her CPA (plus a minute), then steer
+// for the goal: the stand-on ship's plan (Rule 17(a)(i)).
+Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTarget>& until_past);
+
+// The separation net's manoeuvre: the first of these that keeps every target of the problem at least
+// kSeparationMargin x min_separation away and the track `land_clearance` off land (0: no land check),
+// in this order (COLREGs preference: Rules 8, 14-17): 30 to 90 deg to starboard at full speed, the
+// same at half speed, half speed on the present course, 30 to 90 deg to port, stop. The ship holds
+// the new course until every target is past and then steers for the goal. When none keeps the margin,
+// the one that keeps the ship farthest from every target. Status Ok (Fallback when it stops); `why`
+// goes into the message.
+Plan separationManoeuvre(const PlanningProblem& problem, double land_clearance, const std::string& why);
+
+}  // namespace asv

@@ -1,0 +1,244 @@
+#include "asv_core/planning/safety_net.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include "asv_core/common/units.h"
+#include "asv_core/planning/land_route.h"
+
+namespace asv {
+
+double routeClearance(const PredictedRoute& route, const std::vector<PlannerTarget>& targets, double horizon,
+                      double dt) {
+  double best = std::numeric_limits<double>::infinity();
+  if (route.points.empty() || targets.empty())
+    return best;
+  size_t leg = 1;
+  Eigen::Vector2d p = route.points[0];
+  for (double t = 0.0; t <= horizon; t += dt) {
+    for (const auto& tg : targets)
+      best = std::min(best, (tg.state.position + tg.state.velocity() * t - p).norm());
+    if (route.ends_at_goal && leg >= route.points.size())
+      break;
+    double time_left = dt;
+    while (time_left > 0.0 && leg < route.points.size()) {
+      const double speed = route.speeds[leg - 1];
+      if (!(speed > 0.0))
+        break;  // stopped on this leg: stays
+      const Eigen::Vector2d d = route.points[leg] - p;
+      const double step = speed * time_left;
+      if (d.norm() <= step) {
+        time_left -= d.norm() / speed;
+        p = route.points[leg++];
+      } else {
+        p += d.normalized() * step;
+        time_left = 0.0;
+      }
+    }
+  }
+  return best;
+}
+
+PredictedRoute planRoute(const Plan& plan, const PlanningProblem& pr) {
+  const Eigen::Vector2d from = pr.own.position;
+  const double reach = std::max(pr.own.speed, 0.5) * pr.prediction_horizon;
+  const double after =
+      plan.speed_setpoint > 0.0 || plan.status == PlanStatus::Fallback ? plan.speed_setpoint : pr.own.speed;
+  if (plan.waypoints.size() < 2)
+    return {{from, from + courseSpeedToVelocity(plan.course_setpoint, reach)}, {after}};
+  PredictedRoute r{{from}, {}};
+  for (size_t i = 1; i < plan.waypoints.size(); ++i) {
+    r.points.push_back(plan.waypoints[i].position);
+    r.speeds.push_back(plan.waypoints[i].speed > 0.0 ? plan.waypoints[i].speed : after);
+  }
+  size_t next = pr.route.size();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < pr.route.size(); ++k) {
+    const double d = (pr.route[k] - r.points.back()).norm();
+    if (d < nearest) {
+      nearest = d;
+      next = d < 1.0 ? k + 1 : k;
+    }
+  }
+  for (size_t k = next; k < pr.route.size(); ++k) {
+    r.points.push_back(pr.route[k]);
+    r.speeds.push_back(after);
+  }
+  r.points.push_back(pr.goal);
+  r.speeds.push_back(after);
+  r.ends_at_goal = true;
+  return r;
+}
+
+std::vector<Eigen::Vector2d> flownTrack(const PredictedRoute& route, double heading, const OwnShipLimits& limits,
+                                        double reach, double acceptance, double dt) {
+  std::vector<Eigen::Vector2d> track;
+  if (route.points.empty())
+    return track;
+  Eigen::Vector2d p = route.points[0];
+  track.push_back(p);
+  size_t next = 1;
+  double flown = 0.0;
+  while (next < route.points.size() && flown < reach) {
+    if ((route.points[next] - p).norm() < acceptance && next + 1 < route.points.size()) {
+      ++next;
+      continue;
+    }
+    const Eigen::Vector2d d = route.points[next] - p;
+    if (d.norm() < 1.0)
+      break;
+    const double turn = std::remainder(courseOf(d) - heading, kTwoPi);
+    heading = wrapTwoPi(heading + std::clamp(turn, -limits.turn_rate * dt, limits.turn_rate * dt));
+    const double speed = std::max(route.speeds[next - 1], 0.5);
+    const double step = std::min(speed * dt, d.norm());
+    p += courseSpeedToVelocity(heading, step);
+    flown += step;
+    track.push_back(p);
+  }
+  return track;
+}
+
+bool routeKeepsOffLand(const PredictedRoute& route, const PlanningProblem& pr, double required) {
+  if (!(required > 0.0))
+    return true;
+  const double reach = std::max(pr.own.speed, 0.5) * pr.prediction_horizon;
+  // As flown the track cuts corners (waypoint acceptance) and swings out of sharp turns: half the
+  // clearance is kept there, the whole on the planned legs.
+  return trackObstacleDistance(truncateTrack(route.points, reach), pr.obstacles) >= required &&
+         trackObstacleDistance(flownTrack(route, pr.own.heading, pr.limits, reach), pr.obstacles) >= 0.5 * required;
+}
+
+namespace {
+
+// [s] the shortest leg: long enough to be flown (longer than the follower's waypoint acceptance at any
+// sensible speed) and, at 30 deg or more, readily apparent (Rule 8(b)).
+constexpr double kShortestHold = 180.0;
+
+struct Candidate {
+  double turn = 0.0;          // [rad] course change, + starboard
+  double speed_factor = 1.0;  // of the own speed
+};
+
+// The candidates in order of preference (see separationManoeuvre).
+std::vector<Candidate> candidates() {
+  std::vector<Candidate> c;
+  for (double factor : {1.0, 0.5})
+    for (int deg = 30; deg <= 90; deg += 10)
+      c.push_back({degToRad(deg), factor});
+  c.push_back({0.0, 0.5});
+  for (int deg = 30; deg <= 90; deg += 10)
+    c.push_back({-degToRad(deg), 1.0});
+  return c;
+}
+
+// How long the new course is held before the ship steers for the goal again: until every target is past
+// her CPA with the ship on it and the range has opened to kSeparationMargin x the minimum separation,
+// plus a minute (at least kShortestHold), at most the prediction horizon.
+double holdUntilPast(const PlanningProblem& pr, const Eigen::Vector2d& velocity,
+                     const std::vector<PlannerTarget>& targets) {
+  const double open = kSeparationMargin * pr.min_separation;
+  double hold = kShortestHold;
+  for (const auto& t : targets) {
+    const Eigen::Vector2d r = t.state.position - pr.own.position, v = t.state.velocity() - velocity;
+    if (v.squaredNorm() < 1e-9)
+      continue;
+    const double tcpa = -r.dot(v) / v.squaredNorm();
+    const double dcpa = (r + v * tcpa).norm();
+    const double opening = std::sqrt(std::max(0.0, open * open - dcpa * dcpa)) / v.norm();
+    hold = std::max(hold, tcpa + opening + 60.0);
+  }
+  return std::min(hold, pr.prediction_horizon);
+}
+
+// The candidate flown: the new course and speed for `hold` seconds, then (the follower's way past a
+// plan) straight for the goal at the cruising speed. A stop is a Fallback: the follower holds still
+// and keeps asking the planner.
+Plan manoeuvrePlan(const PlanningProblem& pr, const Candidate& c, double hold) {
+  Plan p;
+  p.status = c.speed_factor > 0.0 ? PlanStatus::Ok : PlanStatus::Fallback;
+  p.course_setpoint = wrapTwoPi(pr.own.course + c.turn);
+  p.speed_setpoint = c.speed_factor > 0.0 ? pr.own.speed : 0.0;  // past the leg: cruising speed again
+  PlannedWaypoint start, leg;
+  start.position = pr.own.position;
+  leg.time = hold;
+  leg.course = p.course_setpoint;
+  leg.speed = pr.own.speed * c.speed_factor;
+  leg.position = pr.own.position + courseSpeedToVelocity(leg.course, leg.speed) * hold;
+  p.waypoints = {start};
+  if (c.speed_factor > 0.0)
+    p.waypoints.push_back(leg);
+  return p;
+}
+
+// The candidate's hold times, shortest first: a short leg that gains enough room is the smaller
+// deviation; the last holds until every target is past.
+std::vector<double> holdTimes(const PlanningProblem& pr, const Candidate& c) {
+  const double past =
+      holdUntilPast(pr, courseSpeedToVelocity(pr.own.course + c.turn, pr.own.speed * c.speed_factor), pr.targets);
+  std::vector<double> out;
+  for (double h : {kShortestHold, 2.0 * kShortestHold, 600.0})
+    if (h < past)
+      out.push_back(h);
+  out.push_back(past);
+  return out;
+}
+
+}  // namespace
+
+Plan holdCoursePlan(const PlanningProblem& pr, const std::vector<PlannerTarget>& until_past) {
+  Plan p = manoeuvrePlan(pr, {0.0, 1.0}, holdUntilPast(pr, pr.own.velocity(), until_past));
+  p.message = "hold course and speed";
+  return p;
+}
+
+double planSeparation(const Plan& plan, const PlanningProblem& pr) {
+  return routeClearance(planRoute(plan, pr), pr.targets, pr.prediction_horizon);
+}
+
+namespace {
+
+Plan described(Plan p, const PlanningProblem& pr, double clearance, const std::string& why) {
+  const double turn = radToDeg(std::remainder(p.course_setpoint - pr.own.course, kTwoPi));
+  const double speed = p.waypoints.size() >= 2 ? p.waypoints[1].speed : 0.0;
+  const double hold = p.waypoints.size() >= 2 ? p.waypoints[1].time : 0.0;
+  char text[160];
+  std::snprintf(text, sizeof(text), ": %+.0f deg at %.1f m/s for %.0f s, predicted %.0f m", turn, speed, hold,
+                clearance);
+  p.message = "separation manoeuvre (" + why + ")" + text;
+  return p;
+}
+
+}  // namespace
+
+Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const std::string& why) {
+  const double wanted = kSeparationMargin * pr.min_separation;
+  auto clearOfLand = [&](const Plan& p) { return routeKeepsOffLand(planRoute(p, pr), pr, land_clearance); };
+  // The first candidate that keeps the margin, in the order of preference; else the first that keeps
+  // the minimum; else the one that keeps farthest, or stopping when that keeps farther still.
+  std::optional<std::pair<Plan, double>> first_minimum, farthest;
+  for (const Candidate& c : candidates())
+    for (double hold : holdTimes(pr, c)) {
+      const Plan p = manoeuvrePlan(pr, c, hold);
+      if (!clearOfLand(p))
+        continue;
+      const double clearance = planSeparation(p, pr);
+      if (clearance >= wanted)
+        return described(p, pr, clearance, why);
+      if (clearance >= pr.min_separation && !first_minimum)
+        first_minimum.emplace(p, clearance);
+      if (!farthest || clearance > farthest->second)
+        farthest.emplace(p, clearance);
+    }
+  if (first_minimum)
+    return described(first_minimum->first, pr, first_minimum->second, why);
+  const double stop_clearance = routeClearance({{pr.own.position}, {}}, pr.targets, pr.prediction_horizon);
+  if (!farthest || stop_clearance > farthest->second)
+    return described(manoeuvrePlan(pr, {0.0, 0.0}, 0.0), pr, stop_clearance, why);
+  return described(farthest->first, pr, farthest->second, why);
+}
+
+}  // namespace asv

@@ -1,0 +1,146 @@
+// The separation rule of the shared layer (safety_net.h, planUnderSharedRules): predictions checked
+// against hand geometry, the separation manoeuvre checked by flying its route in the test's own loop.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "asv_core/common/units.h"
+#include "asv_core/planning/plan_follower.h"
+#include "asv_core/planning/safety_net.h"
+#include "planner_target.h"
+
+using namespace asv;
+
+namespace {
+
+PlannerTarget target(const std::string& id, const Eigen::Vector2d& pos, double course_deg, double speed) {
+  return plannerTarget(id, pos, course_deg, speed);
+}
+
+// Own ship at the origin heading north at 6 m/s, goal 20 km ahead, minimum separation 926 m, and a
+// ship met head-on 8 km ahead at 6 m/s (she gives way too, but nobody counts on it).
+PlanningProblem headOn() {
+  PlanningProblem pr;
+  pr.own.id = "own";
+  pr.own.speed = 6.0;
+  pr.goal = {0.0, 20000.0};
+  pr.min_separation = 926.0;
+  PlannerTarget t = target("ts1", {0.0, 8000.0}, 180.0, 6.0);
+  t.encounter = Encounter::HeadOn;
+  t.role = OwnRole::BothGiveWay;
+  pr.targets = {t};
+  return pr;
+}
+
+Plan straightOn(const PlanningProblem& pr) {
+  Plan p;
+  p.status = PlanStatus::Ok;
+  p.course_setpoint = pr.own.course;
+  p.speed_setpoint = pr.own.speed;
+  p.waypoints = {{pr.own.position, 0.0, 0.0, 0.0}, {pr.goal, 0.0, 0.0, pr.own.speed}};
+  p.message = "straight on";
+  return p;
+}
+
+// The test's own flight of a plan: waypoints at their speeds, then the goal at the plan's speed, 1 s
+// steps, against the target holding course and speed; the smallest distance until arrival.
+double flownSeparation(const Plan& p, const PlanningProblem& pr) {
+  std::vector<Eigen::Vector2d> pts{pr.own.position};
+  std::vector<double> speeds;
+  for (size_t i = 1; i < p.waypoints.size(); ++i) {
+    pts.push_back(p.waypoints[i].position);
+    speeds.push_back(p.waypoints[i].speed);
+  }
+  pts.push_back(pr.goal);
+  speeds.push_back(p.speed_setpoint);
+  Eigen::Vector2d own = pts[0];
+  size_t leg = 0;
+  double best = 1e12;
+  const auto& t = pr.targets[0].state;
+  for (int s = 0; s < 4000 && leg < speeds.size(); ++s) {
+    best = std::min(best, (t.position + t.velocity() * s - own).norm());
+    const Eigen::Vector2d d = pts[leg + 1] - own;
+    if (d.norm() <= speeds[leg])
+      own = pts[++leg];
+    else
+      own += d.normalized() * speeds[leg];
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST(SafetyNet, RouteClearanceMatchesHandGeometry) {
+  // A ship stopped at the origin; a target 1000 m east of the track x = 1000, northbound at 10 m/s,
+  // abeam at t = 500 s: 1000 m.
+  const std::vector<PlannerTarget> passing{target("a", {1000.0, -5000.0}, 0.0, 10.0)};
+  EXPECT_NEAR(routeClearance({{{0.0, 0.0}}, {}}, passing, 1200.0), 1000.0, 1e-6);
+  // Own ship 0 -> (0, 1000) at 10 m/s; a target from (0, 3000) southbound at 10 m/s. They are 1000 m
+  // apart when the own ship reaches the end of her route (t = 100 s); if that end is the goal she has
+  // arrived and left; if not she waits there and is run down at t = 200 s.
+  const std::vector<PlannerTarget> meeting{target("b", {0.0, 3000.0}, 180.0, 10.0)};
+  PredictedRoute r{{{0.0, 0.0}, {0.0, 1000.0}}, {10.0}, true};
+  EXPECT_NEAR(routeClearance(r, meeting, 1200.0), 1000.0, 1e-6);
+  r.ends_at_goal = false;
+  EXPECT_NEAR(routeClearance(r, meeting, 1200.0), 0.0, 1e-6);
+  EXPECT_TRUE(std::isinf(routeClearance(r, {}, 1200.0)));
+}
+
+TEST(SafetyNet, AStraightOnPlanIntoAHeadOnShipIsReplacedByAStarboardManoeuvre) {
+  const PlanningProblem pr = headOn();
+  EXPECT_NEAR(planSeparation(straightOn(pr), pr), 0.0, 60.0);  // they meet at 4 km: 0 m, by 5 s samples
+  int calls = 0;
+  const Plan p = planUnderSharedRules([&](const PlanningProblem& q) { return ++calls, straightOn(q); }, pr);
+  EXPECT_EQ(calls, 4);  // the first plan and three retries, all straight on
+  EXPECT_EQ(p.status, PlanStatus::Ok);
+  EXPECT_NE(p.message.find("separation manoeuvre"), std::string::npos) << p.message;
+  // The first preference: 30 deg to starboard (Rule 14, readily apparent by Rule 8), at full speed.
+  EXPECT_NEAR(std::remainder(p.course_setpoint - pr.own.course, kTwoPi), degToRad(30.0), 1e-9);
+  ASSERT_EQ(p.waypoints.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.waypoints[1].speed, 6.0);
+  // Flown by the test's own loop, the manoeuvre and the way back to the goal keep the minimum.
+  EXPECT_GE(flownSeparation(p, pr), 926.0);
+}
+
+TEST(SafetyNet, NoSolutionBecomesTheManoeuvreAndWithoutAMinimumNothingChanges) {
+  PlanningProblem pr = headOn();
+  auto none = [](const PlanningProblem&) {
+    Plan p;
+    p.status = PlanStatus::NoSolution;
+    p.message = "stuck";
+    return p;
+  };
+  const Plan net = planUnderSharedRules(none, pr);
+  EXPECT_EQ(net.status, PlanStatus::Ok);
+  EXPECT_NE(net.message.find("no solution: stuck"), std::string::npos) << net.message;
+  pr.min_separation = 0.0;  // the planners' own distances: the shared layer does not judge
+  EXPECT_EQ(planUnderSharedRules(none, pr).status, PlanStatus::NoSolution);
+  EXPECT_EQ(planUnderSharedRules(straightOn, pr).message, "straight on");
+}
+
+TEST(SafetyNet, TheStandOnShipHoldsCourseWhenThePlanWouldCloseHerGiveWayShip) {
+  // A give-way ship from port, expected to act, so the follower leaves her to stand_on_for. Holding
+  // course the own ship passes 1202 m astern of her (relative motion by hand: r0 = (-3000, 4700),
+  // v = (6, -6), TCPA 641.7 s, DCPA |(850, 850)| = 1202 m); steering 020 for a goal there, 238 m
+  // (same formula, v = (6 - 2.05, -5.64)). The shared layer holds course and speed instead.
+  PlanningProblem pr;
+  pr.own.id = "own";
+  pr.own.speed = 6.0;
+  pr.goal = {6840.4, 18793.9};  // 020 deg, 20 km
+  pr.min_separation = 926.0;
+  PlannerTarget gw = target("gw", {-3000.0, 4700.0}, 90.0, 6.0);
+  gw.encounter = Encounter::CrossingStandOn;
+  gw.role = OwnRole::StandOn;
+  gw.compliant = true;
+  pr.stand_on_for = {gw};
+  auto toGoal = [](const PlanningProblem& q) {
+    Plan p = straightOn(q);
+    p.course_setpoint = courseOf(q.goal - q.own.position);
+    return p;
+  };
+  const Plan p = planUnderSharedRules(toGoal, pr);
+  EXPECT_NE(p.message.find("stand on (Rule 17(a)(i))"), std::string::npos) << p.message;
+  EXPECT_NEAR(p.course_setpoint, 0.0, 1e-12);
+  ASSERT_EQ(p.waypoints.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.waypoints[1].speed, 6.0);
+}
