@@ -83,6 +83,18 @@ class ParamErrors(unittest.TestCase):
         finally:
             sub.unregister()
 
+    def test_unreadable_chart_names_the_file(self):
+        # A chart source that cannot be read stops every node that loads the scenario's land, naming the
+        # scenario, the key and the chart file (island.yaml has no charts key: the parameter adds one).
+        import rospkg
+        scenarios = rospkg.RosPack().get_path("asv_bringup") + "/scenarios/"
+        for pkg, node, name, extra in [("asv_sim", "sim_node", "pe_chart_sim", []),
+                                       ("asv_sim", "evaluator_node", "pe_chart_eval", ["_own_ship:=own"]),
+                                       ("asv_planning", "planner_node", "pe_chart_plan", ["_planner:=none"])]:
+            self.expect_refused("'charts': /nonexistent/land.geojson: cannot open as a vector chart", pkg, node, name,
+                                "_scenario:=" + scenarios + "island.yaml", "_charts:=/nonexistent/land.geojson",
+                                *extra)
+
     def test_invalid_global_lockstep_parameters(self):
         try:
             rospy.set_param("/lockstep", True)
