@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <utility>
 
+#include "asv_core/common/format.h"
 #include "asv_core/common/units.h"
 #include "asv_core/planning/land_route.h"
+#include "asv_core/risk/cpa.h"
 
 namespace asv {
 
@@ -143,13 +144,11 @@ double holdUntilPast(const PlanningProblem& pr, const Eigen::Vector2d& velocity,
   const double open = kSeparationMargin * pr.min_separation;
   double hold = kShortestHold;
   for (const auto& t : targets) {
-    const Eigen::Vector2d r = t.state.position - pr.own.position, v = t.state.velocity() - velocity;
-    if (v.squaredNorm() < 1e-9)
+    const Cpa cpa = computeCpa(pr.own.position, velocity, t.state.position, t.state.velocity());
+    if (!cpa.relative_motion)
       continue;
-    const double tcpa = -r.dot(v) / v.squaredNorm();
-    const double dcpa = (r + v * tcpa).norm();
-    const double opening = std::sqrt(std::max(0.0, open * open - dcpa * dcpa)) / v.norm();
-    hold = std::max(hold, tcpa + opening + 60.0);
+    const double opening = std::sqrt(std::max(0.0, open * open - cpa.dcpa * cpa.dcpa)) / cpa.relative_speed;
+    hold = std::max(hold, cpa.tcpa + opening + 60.0);
   }
   return std::min(hold, pr.prediction_horizon);
 }
@@ -205,10 +204,8 @@ Plan described(Plan p, const PlanningProblem& pr, double clearance, const std::s
   const double turn = radToDeg(std::remainder(p.course_setpoint - pr.own.course, kTwoPi));
   const double speed = p.waypoints.size() >= 2 ? p.waypoints[1].speed : 0.0;
   const double hold = p.waypoints.size() >= 2 ? p.waypoints[1].time : 0.0;
-  char text[160];
-  std::snprintf(text, sizeof(text), ": %+.0f deg at %.1f m/s for %.0f s, predicted %.0f m", turn, speed, hold,
-                clearance);
-  p.message = "separation manoeuvre (" + why + ")" + text;
+  p.message = "separation manoeuvre (" + why + ")" +
+              strFormat(": %+.0f deg at %.1f m/s for %.0f s, predicted %.0f m", turn, speed, hold, clearance);
   return p;
 }
 

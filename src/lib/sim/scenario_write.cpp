@@ -1,22 +1,16 @@
 #include "asv_core/sim/scenario_write.h"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
+#include "asv_core/common/format.h"
 #include "asv_core/common/units.h"
 
 namespace asv {
 namespace {
 
-// printf into a string; every number of the file goes through here, so its rounding is one rule.
-template <typename... Args>
-std::string fmt(const char* format, Args... args) {
-  char buf[128];
-  std::snprintf(buf, sizeof(buf), format, args...);
-  return buf;
-}
+// Every number of the file is written through strFormat with a fixed precision (header).
 
 // A YAML double-quoted scalar: descriptions and names may hold any character.
 std::string quoted(const std::string& text) {
@@ -30,7 +24,7 @@ std::string quoted(const std::string& text) {
 }
 
 std::string point(const Eigen::Vector2d& p) {
-  return fmt("{x_m: %.1f, y_m: %.1f}", p.x(), p.y());
+  return strFormat("{x_m: %.1f, y_m: %.1f}", p.x(), p.y());
 }
 
 void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const std::string& indent) {
@@ -45,16 +39,16 @@ void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const s
   if (s.ais_class != 'A')
     out << i << "ais_class: " << s.ais_class << "\n";
   if (s.length > 0.0)
-    out << i << fmt("length_m: %.1f\n", s.length);
+    out << i << strFormat("length_m: %.1f\n", s.length);
   if (s.beam > 0.0)
-    out << i << fmt("beam_m: %.1f\n", s.beam);
+    out << i << strFormat("beam_m: %.1f\n", s.beam);
   out << i << "position: " << point(s.position) << "\n";
-  out << i << fmt("course_deg: %.1f\n", wrapDeg360(radToDeg(s.course)));
-  out << i << fmt("speed_kn: %.2f\n", mpsToKnots(s.speed));
+  out << i << strFormat("course_deg: %.1f\n", wrapDeg360(radToDeg(s.course)));
+  out << i << strFormat("speed_kn: %.2f\n", mpsToKnots(s.speed));
   if (s.goal)
     out << i << "goal: " << point(*s.goal) << "\n";
   if (s.goal_radius > 0.0)
-    out << i << fmt("goal_radius_m: %.1f\n", s.goal_radius);
+    out << i << strFormat("goal_radius_m: %.1f\n", s.goal_radius);
   if (!s.planner.empty())
     out << i << "planner: " << s.planner << "\n";
   if (!own)
@@ -70,12 +64,12 @@ std::string scenarioToYaml(const Scenario& s) {
   out << "format: 1\nname: " << s.name << "\n";
   if (!s.description.empty())
     out << "description: " << quoted(s.description) << "\n";
-  out << fmt("duration_s: %.0f\n", s.duration);
+  out << strFormat("duration_s: %.0f\n", s.duration);
   if (s.has_origin)
-    out << fmt("origin: {lat_deg: %.7f, lon_deg: %.7f}\n", s.origin.lat_deg, s.origin.lon_deg);
-  out << fmt("safety: {min_separation_m: %.1f", s.min_separation);
+    out << strFormat("origin: {lat_deg: %.7f, lon_deg: %.7f}\n", s.origin.lat_deg, s.origin.lon_deg);
+  out << strFormat("safety: {min_separation_m: %.1f", s.min_separation);
   if (s.min_obstacle_clearance > 0.0)
-    out << fmt(", min_obstacle_clearance_m: %.1f", s.min_obstacle_clearance);
+    out << strFormat(", min_obstacle_clearance_m: %.1f", s.min_obstacle_clearance);
   out << "}\nown_ship:\n";
   writeShip(out, s.own, true, "  ");
   if (!s.targets.empty())
