@@ -225,6 +225,27 @@ TEST(PlanUnderSharedRules, APlanOverLandIsRefusedAndReplanned) {
   EXPECT_EQ(asv::planUnderSharedRules(fake, pr).waypoints.size(), 2u);
 }
 
+// A planner's least-violation plan (status Fallback: MOPSO's when no particle is feasible) is sailed
+// like any other, so land is its rule too: over the island it is refused, and the detour is taken.
+// (It was let through unchecked, and MOPSO ran aground in New York's Narrows.)
+TEST(PlanUnderSharedRules, APlannersFallbackPlanOverLandIsRefusedToo) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {0.0, 4000.0};
+  pr.seed = 7;
+  pr.obstacles = {island()};
+  pr.min_obstacle_clearance = 185.2;
+  auto fake = [&](const asv::PlanningProblem& p) {
+    asv::Plan plan = p.seed == 7 ? waypointPlan({{0, 0}, {0, 4000}})
+                                 : waypointPlan({{0, 0}, {-1500, 900}, {-1500, 3100}, {0, 4000}});
+    plan.status = asv::PlanStatus::Fallback;
+    return plan;
+  };
+  const asv::Plan p = asv::planUnderSharedRules(fake, pr);
+  EXPECT_EQ(p.waypoints.size(), 4u);
+  EXPECT_NE(p.message.find("of land"), std::string::npos) << p.message;
+}
+
 TEST(PlanUnderSharedRules, LandRequirementLetsAShipInsideTheClearanceMove) {
   const std::vector<asv::StaticObstacle> land = {island()};
   const Eigen::Vector2d far_goal(0.0, -10000.0);

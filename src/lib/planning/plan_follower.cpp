@@ -84,10 +84,15 @@ bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {
 
 namespace {
 
-// The plan keeps clear of land (plans that are not Ok are the follower's to handle), flown as the
-// follower and later plans fly it (planRoute).
+// A plan the ship will sail: Ok, or a planner's least-violation Fallback (MOPSO's when no particle is
+// feasible), which the follower steers all the same. NoSolution is the follower's to handle.
+bool sailed(const Plan& plan) {
+  return plan.status != PlanStatus::NoSolution;
+}
+
+// The plan keeps clear of land, flown as the follower and later plans fly it (planRoute).
 bool clearOfLand(const Plan& plan, const PlanningProblem& problem, double required) {
-  return plan.status != PlanStatus::Ok || routeKeepsOffLand(planRoute(plan, problem), problem, required);
+  return !sailed(plan) || routeKeepsOffLand(planRoute(plan, problem), problem, required);
 }
 
 }  // namespace
@@ -106,7 +111,7 @@ struct RuleCheck {
     // The minimum itself: the planners aim at kSeparationMargin x it (planning.h), and so does the
     // separation manoeuvre, so a plan a little under their aim is still kept.
     const double wanted = problem.min_separation;
-    if (p.status == PlanStatus::Ok && wanted > 0.0) {
+    if (sailed(p) && wanted > 0.0) {
       const double sep = planSeparation(p, problem);
       if (sep < wanted)
         return "passed " + std::to_string(static_cast<int>(sep)) + " m from a ship, under " +

@@ -64,7 +64,8 @@ struct PlanFollowerConfig {
 //  - Rules 14 and 15: when the own ship gives way in a head-on or crossing encounter (a target of the
 //    problem with that encounter), a first alteration more than 5 deg to port. If none complies, the
 //    first plan is kept with a note in its message.
-// Fallbacks pass unchanged. `make` is the planner (it may throw; the exception propagates).
+// A planner's Fallback (a least-violation plan, which the follower sails all the same) keeps the land
+// and separation rules too. `make` is the planner (it may throw; the exception propagates).
 Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries = 3);
 bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
