@@ -64,29 +64,23 @@ struct Args {
   GeneratorConfig cfg;
 };
 
-bool number(const std::string& v, double& out) {
-  char* end = nullptr;
-  out = std::strtod(v.c_str(), &end);
-  return !v.empty() && end && *end == '\0';
-}
-
 bool option(Args& a, const std::string& k, const std::string& v) {
   double x = 0.0;
   if (k == "--out")
     a.out = v;
   else if (k == "--class")
     a.cls = v;
-  else if (k == "--count" && number(v, x) && x >= 1 && x == double(static_cast<long long>(x)))
+  else if (k == "--count" && toolNumber(v, x) && x >= 1 && x == double(static_cast<long long>(x)))
     a.count = static_cast<long long>(x);
-  else if (k == "--seed" && number(v, x) && x >= 0 && x == double(static_cast<long long>(x)))
+  else if (k == "--seed" && toolNumber(v, x) && x >= 0 && x == double(static_cast<long long>(x)))
     a.seed = static_cast<unsigned long long>(x);
-  else if (k == "--first" && number(v, x) && x >= 0 && x == double(static_cast<long long>(x)))
+  else if (k == "--first" && toolNumber(v, x) && x >= 0 && x == double(static_cast<long long>(x)))
     a.first = static_cast<long long>(x);
-  else if (k == "--max-targets" && number(v, x) && x >= 2 && x == double(int(x)))
+  else if (k == "--max-targets" && toolNumber(v, x) && x >= 2 && x == double(int(x)))
     a.cfg.max_targets = int(x);
-  else if (k == "--rule-breakers" && number(v, x))
+  else if (k == "--rule-breakers" && toolNumber(v, x))
     a.cfg.rule_breaker_share = x;
-  else if (k == "--own-speed" && v.find(',') != std::string::npos && number(v.substr(0, v.find(',')), x))
+  else if (k == "--own-speed" && v.find(',') != std::string::npos && toolNumber(v.substr(0, v.find(',')), x))
     a.cfg.own_speed_min_kn = x, a.cfg.own_speed_max_kn = std::strtod(v.c_str() + v.find(',') + 1, nullptr);
   else
     return false;
@@ -96,10 +90,7 @@ bool option(Args& a, const std::string& k, const std::string& v) {
 bool parse(int argc, char** argv, Args& a) {
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
-    if (k == "-h" || k == "--help") {
-      std::cout << kUsage;
-      std::exit(0);
-    }
+    exitOnHelp(k, kUsage);
     if (k == "--list-classes") {
       std::cout << kClassHelp;
       std::exit(0);
@@ -167,7 +158,8 @@ int run(const Args& a) {
       return 1;
     }
     if (progress)
-      std::cerr << "\rasv_scenario_gen: " << i + 1 << "/" << a.count << " " << file << "        " << std::flush;
+      std::cerr << "\rasv_scenario_gen: " << i + 1 << "/" << a.count << " " << file << "        "
+                << std::flush;
   }
   if (progress)
     std::cerr << "\n";

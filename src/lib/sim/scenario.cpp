@@ -190,15 +190,38 @@ struct RawShip {
   PointSpec pos;
   std::optional<PointSpec> goal;
   std::vector<PointSpec> waypoints;
+  std::vector<std::pair<double, PointSpec>> track;  // (t_s, point)
   YAML::Node node;
 };
+
+// track: [{t_s, x_m, y_m} or {t_s, lat_deg, lon_deg}, ...], times > 0 and strictly increasing (the
+// ship's position is its place at t = 0).
+std::vector<std::pair<double, PointSpec>> readTrack(const Ctx& c, const YAML::Node& n, const std::string& w) {
+  const YAML::Node tr = n["track"];
+  if (!tr || !tr.IsSequence() || tr.size() == 0)
+    c.fail(n, w + "track", "behaviour track needs a non-empty list of {t_s, position} points");
+  std::vector<std::pair<double, PointSpec>> out;
+  for (size_t i = 0; i < tr.size(); ++i) {
+    const std::string wi = w + "track[" + std::to_string(i) + "]";
+    if (!tr[i].IsMap())
+      c.fail(tr[i], wi, "expected {t_s, x_m, y_m} or {t_s, lat_deg, lon_deg}");
+    YAML::Node point = YAML::Clone(tr[i]);
+    const double t = c.number(tr[i], "t_s", wi + ".");
+    if (!(t > (out.empty() ? 0.0 : out.back().first)) || t > 7 * 86400.0)
+      c.fail(tr[i]["t_s"], wi + ".t_s",
+             "times must be > 0, at most 604800 s and strictly increasing along the track");
+    point.remove("t_s");
+    out.emplace_back(t, readPoint(c, point, wi, false));
+  }
+  return out;
+}
 
 RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bool own) {
   std::set<std::string> allowed{"name",   "mmsi",     "model",        "ais_class", "length_m",
                                 "beam_m", "position", "course_deg",   "speed_kn",  "speed_mps",
                                 "goal",   "planner",  "goal_radius_m"};
   if (!own)
-    allowed.insert({"behaviour", "waypoints"});
+    allowed.insert({"behaviour", "waypoints", "track"});
   c.onlyKeys(n, where, allowed);
   RawShip r;
   r.node = n;
@@ -266,9 +289,11 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
       s.behaviour = Behaviour::PortTurn;
     else if (b == "planner")
       s.behaviour = Behaviour::Planner;
+    else if (b == "track")
+      s.behaviour = Behaviour::Track;
     else
       c.fail(n["behaviour"], w + "behaviour",
-             "must be constant, waypoints, give_way, non_compliant, port_turn or planner");
+             "must be constant, waypoints, give_way, non_compliant, port_turn, planner or track");
     if (s.behaviour == Behaviour::Waypoints) {
       const YAML::Node wps = n["waypoints"];
       if (!wps || !wps.IsSequence() || wps.size() == 0)
@@ -278,6 +303,10 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
     } else if (n["waypoints"]) {
       c.fail(n["waypoints"], w + "waypoints", "only for behaviour: waypoints");
     }
+    if (s.behaviour == Behaviour::Track)
+      r.track = readTrack(c, n, w);
+    else if (n["track"])
+      c.fail(n["track"], w + "track", "only for behaviour: track");
     if (s.behaviour == Behaviour::Planner) {
       if (s.planner.empty())
         c.fail(n, w + "planner", "behaviour planner needs a planner");
@@ -304,6 +333,8 @@ const char* toString(Behaviour b) {
       return "port_turn";
     case Behaviour::Planner:
       return "planner";
+    case Behaviour::Track:
+      return "track";
     case Behaviour::Constant:
       break;
   }
@@ -400,6 +431,8 @@ void readShips(const Ctx& c, const YAML::Node& root, Scenario& s) {
       r.ship.goal = resolve(*r.goal, frame, own_start);
     for (const auto& w : r.waypoints)
       r.ship.waypoints.push_back(resolve(w, frame, own_start));
+    for (const auto& [t, p] : r.track)
+      r.ship.track.push_back({t, resolve(p, frame, own_start)});
     return r.ship;
   };
   s.own = finish(own);

@@ -27,9 +27,14 @@ std::string point(const Eigen::Vector2d& p) {
   return strFormat("{x_m: %.1f, y_m: %.1f}", p.x(), p.y());
 }
 
+// A recorded track, one point a line.
+void writeTrack(std::ostringstream& out, const std::vector<TrackPoint>& track, const std::string& i) {
+  out << i << "track:\n";
+  for (const auto& p : track)
+    out << i << strFormat("  - {t_s: %.1f, x_m: %.1f, y_m: %.1f}\n", p.t, p.position.x(), p.position.y());
+}
+
 void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const std::string& indent) {
-  if (!s.waypoints.empty())
-    throw std::invalid_argument("scenarioToYaml: waypoints are not written (ship " + s.name + ")");
   const std::string in = indent + "  ";
   out << indent << (own ? "" : "- ") << "name: " << s.name << "\n";
   const std::string i = own ? indent : in;
@@ -43,7 +48,8 @@ void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const s
   if (s.beam > 0.0)
     out << i << strFormat("beam_m: %.1f\n", s.beam);
   out << i << "position: " << point(s.position) << "\n";
-  out << i << strFormat("course_deg: %.1f\n", wrapDeg360(radToDeg(s.course)));
+  // Rounded first, then wrapped: 359.96 deg is written 0.0, not 360.0 (outside [0, 360)).
+  out << i << strFormat("course_deg: %.1f\n", wrapDeg360(std::round(radToDeg(s.course) * 10.0) / 10.0));
   out << i << strFormat("speed_kn: %.2f\n", mpsToKnots(s.speed));
   if (s.goal)
     out << i << "goal: " << point(*s.goal) << "\n";
@@ -51,15 +57,34 @@ void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const s
     out << i << strFormat("goal_radius_m: %.1f\n", s.goal_radius);
   if (!s.planner.empty())
     out << i << "planner: " << s.planner << "\n";
-  if (!own)
-    out << i << "behaviour: " << toString(s.behaviour) << "\n";
+  if (own)
+    return;
+  out << i << "behaviour: " << toString(s.behaviour) << "\n";
+  if (!s.waypoints.empty()) {
+    out << i << "waypoints:\n";
+    for (const auto& w : s.waypoints)
+      out << i << "  - " << point(w) << "\n";
+  }
+  if (!s.track.empty())
+    writeTrack(out, s.track, i);
+}
+
+// charts, with the scenario's obstacle clearance (written here, not under safety).
+void writeCharts(std::ostringstream& out, const ChartSpec& c, double clearance) {
+  out << "charts: {source: " << quoted(c.source) << ", resolution: " << c.resolution;
+  if (!c.layer.empty())
+    out << ", layer: " << quoted(c.layer);
+  out << strFormat(", radius_m: %.0f, simplify_m: %.1f", c.radius_m, c.simplify_m);
+  if (clearance > 0.0)
+    out << strFormat(", clearance_m: %.1f", clearance);
+  out << "}\n";
 }
 
 }  // namespace
 
 std::string scenarioToYaml(const Scenario& s) {
-  if (s.charts || !s.sensor_faults.empty() || !s.planner_params.values().empty())
-    throw std::invalid_argument("scenarioToYaml: charts, sensor_faults and planner_params are not written");
+  if (!s.sensor_faults.empty() || !s.planner_params.values().empty())
+    throw std::invalid_argument("scenarioToYaml: sensor_faults and planner_params are not written");
   std::ostringstream out;
   out << "format: 1\nname: " << s.name << "\n";
   if (!s.description.empty())
@@ -68,9 +93,12 @@ std::string scenarioToYaml(const Scenario& s) {
   if (s.has_origin)
     out << strFormat("origin: {lat_deg: %.7f, lon_deg: %.7f}\n", s.origin.lat_deg, s.origin.lon_deg);
   out << strFormat("safety: {min_separation_m: %.1f", s.min_separation);
-  if (s.min_obstacle_clearance > 0.0)
+  if (s.min_obstacle_clearance > 0.0 && !s.charts)
     out << strFormat(", min_obstacle_clearance_m: %.1f", s.min_obstacle_clearance);
-  out << "}\nown_ship:\n";
+  out << "}\n";
+  if (s.charts)
+    writeCharts(out, *s.charts, s.min_obstacle_clearance);
+  out << "own_ship:\n";
   writeShip(out, s.own, true, "  ");
   if (!s.targets.empty())
     out << "targets:\n";

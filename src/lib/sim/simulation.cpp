@@ -111,6 +111,8 @@ Simulation::Simulation(const Scenario& scenario, const SimConfig& config)
     v.goal_radius = s.goal_radius;
     v.step_from = s.position;
     v.waypoints = s.waypoints;
+    v.track = s.track;
+    v.track_start = s.position;
     if (v.autopilot)
       v.autopilot->setCourseSpeed(v.course_sp, v.speed_sp);
   }
@@ -233,13 +235,67 @@ void Simulation::steer(SimVessel& v) {
     case Behaviour::Constant:
     case Behaviour::NonCompliant:  // a give-way ship that stands on (Hu et al. 2017, Fig. 6)
     case Behaviour::Waypoints:
+    case Behaviour::Track:  // replayed, not steered (replayTrack)
       break;
+  }
+}
+
+TrackSample sampleTrack(const Eigen::Vector2d& start, double start_course,
+                        const std::vector<TrackPoint>& track, double t) {
+  TrackSample s;
+  s.course = start_course;
+  Eigen::Vector2d from = start;
+  double t_from = 0.0;
+  for (const TrackPoint& p : track) {
+    const Eigen::Vector2d leg = p.position - from;
+    const double span = p.t - t_from;
+    if (leg.norm() > 1e-9)
+      s.course = courseOf(leg);
+    if (t < p.t) {
+      const double f = std::clamp((t - t_from) / span, 0.0, 1.0);
+      s.position = from + f * leg;
+      s.speed = leg.norm() / span;
+      return s;
+    }
+    from = p.position;
+    t_from = p.t;
+  }
+  s.position = from;
+  s.ended = true;
+  return s;
+}
+
+// A recorded ship is where her track puts her, whatever happens round her; after its last point she
+// has left the scenario (arrived, no longer refereed), as a waypoint ship at her goal.
+void Simulation::replayTrack(SimVessel& v, double t) {
+  if (v.arrived)
+    return;
+  const TrackSample s = sampleTrack(v.track_start, v.cruise_course, v.track, t);
+  VesselState st = v.state();
+  st.x = s.position.x();
+  st.y = s.position.y();
+  st.psi = s.course;
+  st.u = s.speed;
+  st.v = st.r = 0.0;
+  v.model->setState(st);
+  v.course_sp = s.course;
+  v.speed_sp = s.speed;
+  if (s.ended) {
+    v.arrived = true;
+    v.arrival_time = t;
+    events_.push_back({SimEvent::Arrival, t, v.name, "", 0.0});
   }
 }
 
 void Simulation::step() {
   const double dt = cfg_.dt;
   for (auto& v : vessels_) {
+    if (v.behaviour == Behaviour::Track) {
+      const Eigen::Vector2d before = v.step_from = v.position();
+      replayTrack(v, time_ + dt);
+      v.path_length += (v.position() - before).norm();
+      continue;
+    }
     steer(v);
     const Eigen::Vector2d before = v.step_from = v.position();
     VesselInput in;

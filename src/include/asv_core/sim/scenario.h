@@ -23,9 +23,16 @@ public:
 };
 
 // NonCompliant: a give-way ship that stands on; PortTurn: a give-way ship that alters to port (the
-// classic error of Rules 14/15). Both are the rule-breakers of generated traffic.
-enum class Behaviour : uint8_t { Constant, Waypoints, GiveWay, NonCompliant, PortTurn, Planner };
+// classic error of Rules 14/15). Both are the rule-breakers of generated traffic. Track: a recorded
+// track replayed in time (real traffic from an AIS log), whatever happens round the ship.
+enum class Behaviour : uint8_t { Constant, Waypoints, GiveWay, NonCompliant, PortTurn, Planner, Track };
 const char* toString(Behaviour b);
+
+// One point of a recorded track: where the ship was at time t of the scenario.
+struct TrackPoint {
+  double t = 0.0;                                      // [s] since the scenario's start, > 0
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] ENU
+};
 
 struct ScenarioShip {
   std::string name;
@@ -42,6 +49,9 @@ struct ScenarioShip {
   std::string planner;       // plugin short name; empty: none
   Behaviour behaviour = Behaviour::Constant;  // targets only; the own ship plans (or steers for its goal)
   std::vector<Eigen::Vector2d> waypoints;     // [m] ENU, for Behaviour::Waypoints
+  // Behaviour::Track: times strictly increasing; the ship sails in a straight line from `position`
+  // (t = 0) to each point in turn, arriving at its time, and leaves the scenario after the last.
+  std::vector<TrackPoint> track;
 };
 
 // A sensor fault the simulator's NMEA emitter plays (sim_node; asv_batch uses ground truth and ignores

@@ -58,7 +58,9 @@ struct SimVessel {
   double goal_radius = 0.0;  // [m] arrival radius; 0: max(traffic.waypoint_acceptance, 2 L)
   std::vector<Eigen::Vector2d> waypoints;
   size_t wp_index = 0;
-  Eigen::Vector2d step_from = Eigen::Vector2d::Zero();  // [m] position at the start of the last step
+  std::vector<TrackPoint> track;                          // Behaviour::Track
+  Eigen::Vector2d track_start = Eigen::Vector2d::Zero();  // [m] where the track starts (t = 0)
+  Eigen::Vector2d step_from = Eigen::Vector2d::Zero();    // [m] position at the start of the last step
   bool arrived = false;
   double arrival_time = -1.0;
   bool giving_way = false;  // give_way behaviour: alteration in progress
@@ -72,6 +74,19 @@ struct SimVessel {
   double sog() const { return model->speedOverGround(); }
   ShipState shipState() const;
 };
+
+// Where a ship replaying a recorded track is at time t [s]: on the straight leg that spans t (from
+// `start` at t = 0 to the first point, then point to point), at that leg's course and constant speed.
+// A leg of no length keeps the course before it (`start_course` on the first). Past the last point:
+// there, speed 0, ended.
+struct TrackSample {
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] ENU
+  double course = 0.0;                                 // [rad] nautical
+  double speed = 0.0;                                  // [m/s]
+  bool ended = false;
+};
+TrackSample sampleTrack(const Eigen::Vector2d& start, double start_course,
+                        const std::vector<TrackPoint>& track, double t);
 
 struct SimEvent {
   // Grounding: ship a's hull outline touched static obstacle b (land); distance 0.
@@ -120,6 +135,7 @@ public:
 
 private:
   void steer(SimVessel& v);
+  void replayTrack(SimVessel& v, double t);
   void giveWayLogic(SimVessel& v, size_t index);
   void referee();
   void refereeLand();

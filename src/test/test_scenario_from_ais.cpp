@@ -1,0 +1,271 @@
+// Real-traffic scenarios: the MarineCadastre reader and its repairs, recorded tracks in the simulator,
+// and the window-to-scenario conversion, against values worked out by hand.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "asv_core/common/units.h"
+#include "asv_core/sim/scenario_from_ais.h"
+#include "asv_core/sim/scenario_write.h"
+#include "asv_core/sim/simulation.h"
+
+using namespace asv;
+
+namespace {
+
+const char* const kHeader =
+    "BaseDateTime,LON,LAT,MMSI,SOG,COG,Heading,VesselName,IMO,CallSign,VesselType,Status,Length,Width,"
+    "Draft,Cargo,TranscieverClass,ETA\n";
+
+std::vector<AisLogReport> readCsv(const std::string& rows, AisLogStats& stats) {
+  std::istringstream in(std::string(kHeader) + rows);
+  return readMarineCadastreCsv(in, stats);
+}
+
+// A row of the log at minute:second past 00:00 of 2020-06-30.
+std::string row(int min, int sec, double lat, double lon, uint32_t mmsi, double sog, double cog,
+                const std::string& name = "", const std::string& length = "") {
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "2020-06-30T00:%02d:%02d,%.5f,%.5f,%u,%.1f,%.1f,511.0,%s,,,60.0,0.0,%s,,,,A,\n", min, sec,
+                lon, lat, mmsi, sog, cog, name.c_str(), length.c_str());
+  return buf;
+}
+
+const double kT0 = 1593475200.0;  // 2020-06-30T00:00:00Z (date -u -d ... +%s)
+
+}  // namespace
+
+TEST(ScenarioFromAis, UtcTimesAreSecondsSince1970) {
+  EXPECT_DOUBLE_EQ(parseUtcTime("2020-06-30T00:00:00"), kT0);
+  EXPECT_DOUBLE_EQ(parseUtcTime("2020-06-30 00:05:00Z"), kT0 + 300.0);
+  EXPECT_DOUBLE_EQ(parseUtcTime("1970-01-01T00:00:00"), 0.0);
+  EXPECT_DOUBLE_EQ(parseUtcTime("2000-03-01T00:00:00"), 951868800.0);  // after a leap day (date -u)
+  for (const char* bad : {"2020-06-30", "2020-13-01T00:00:00", "2020-06-30T00:00:00+02", "yesterday"})
+    EXPECT_THROW(parseUtcTime(bad), std::invalid_argument) << bad;
+}
+
+// The source's defects (its README and NOAA's): COG < 0 wrapped as 12 bits, 360 / 511 / 102.3 "not
+// available"; unreadable rows refused and counted, valid ones all kept.
+TEST(ScenarioFromAis, ReaderRepairsTheSourcesDefectsAndCountsRefusals) {
+  AisLogStats st;
+  const auto log = readCsv(row(0, 0, 40.64409, -74.07157, 367000140, 0.0, -60.6, "SAMUEL I NEWHOUSE") +
+                               row(0, 1, 40.6, -74.0, 367000141, 5.0, -49.6) +  // COG not available
+                               row(0, 2, 40.6, -74.0, 367000142, 5.0, 123.4, "\"A, B\"") +
+                               row(0, 3, 40.6, -74.0, 367000143, 102.3, 10.0) +  // SOG not available
+                               row(0, 4, 91.0, -74.0, 367000144, 5.0, 10.0) +    // latitude 91
+                               "2020-06-30T00:00:05,-74.0,40.6,367000145\n" +    // short row
+                               "2020-06-30T00:00:06,-74.0,40.6,abc,1,1,1,,,,,,,,,,A,\n",
+                           st);
+  EXPECT_EQ(st.rows, 7u);
+  EXPECT_EQ(st.kept, 3u);
+  ASSERT_EQ(log.size(), 3u);
+  EXPECT_EQ(st.rejected.at("SOG missing or not available"), 1u);
+  EXPECT_EQ(st.rejected.at("position missing or out of range"), 1u);
+  EXPECT_EQ(st.rejected.at("wrong number of columns"), 1u);
+  EXPECT_EQ(st.rejected.at("MMSI not a 9-digit number"), 1u);
+  EXPECT_NEAR(*log[0].cog_deg, 349.0, 1e-9);  // -60.6 + 409.6
+  EXPECT_FALSE(log[0].heading_deg);           // 511
+  EXPECT_FALSE(log[1].cog_deg);               // -49.6 + 409.6 = 360
+  EXPECT_EQ(log[2].name, "A, B");
+  EXPECT_NEAR(log[0].position.lat_deg, 40.64409, 1e-12);
+  EXPECT_DOUBLE_EQ(log[1].time, kT0 + 1.0);
+  std::istringstream no_cog("BaseDateTime,LON,LAT,MMSI,SOG,Heading\n");
+  EXPECT_THROW(readMarineCadastreCsv(no_cog, st), std::invalid_argument);
+}
+
+// From (0, 0) at t = 0: 500 m north by t = 100 s, then 500 m east by t = 200 s.
+TEST(ScenarioFromAis, TrackSampleIsOnTheLegAtItsSpeed) {
+  const std::vector<TrackPoint> track{{100.0, {0.0, 500.0}}, {200.0, {500.0, 500.0}}};
+  TrackSample s = sampleTrack({0.0, 0.0}, 1.0, track, 50.0);
+  EXPECT_NEAR(s.position.y(), 250.0, 1e-9);
+  EXPECT_NEAR(s.course, 0.0, 1e-12);
+  EXPECT_NEAR(s.speed, 5.0, 1e-12);
+  s = sampleTrack({0.0, 0.0}, 1.0, track, 150.0);
+  EXPECT_NEAR(s.position.x(), 250.0, 1e-9);
+  EXPECT_NEAR(s.course, kPi / 2.0, 1e-12);
+  EXPECT_FALSE(s.ended);
+  s = sampleTrack({0.0, 0.0}, 1.0, track, 250.0);
+  EXPECT_TRUE(s.ended);
+  EXPECT_NEAR(s.position.x(), 500.0, 1e-9);
+  EXPECT_EQ(s.speed, 0.0);
+  // A leg of no length (a ship lying still between reports) keeps the course before it.
+  s = sampleTrack({0.0, 0.0}, 1.0, {{100.0, {0.0, 0.0}}}, 50.0);
+  EXPECT_NEAR(s.course, 1.0, 1e-12);
+  EXPECT_EQ(s.speed, 0.0);
+}
+
+TEST(ScenarioFromAis, SimulatorReplaysATrackAndTheShipLeavesAfterIt) {
+  Simulation sim(parseScenario(R"(format: 1
+name: t
+duration_s: 600
+own_ship: {name: own, position: {x_m: -3000, y_m: 0}, course_deg: 270, speed_mps: 5}
+targets:
+  - name: rec
+    position: {x_m: 0, y_m: 0}
+    course_deg: 0
+    speed_kn: 9.7
+    behaviour: track
+    track: [{t_s: 100, x_m: 0, y_m: 500}, {t_s: 200, x_m: 500, y_m: 500}]
+)"));
+  for (int i = 0; i < 1500; ++i)  // 150 s of 0.1 s steps
+    sim.step();
+  const SimVessel& rec = *sim.find("rec");
+  EXPECT_NEAR(rec.position().x(), 250.0, 1e-6);
+  EXPECT_NEAR(rec.position().y(), 500.0, 1e-6);
+  EXPECT_NEAR(rec.sog(), 5.0, 1e-9);
+  EXPECT_NEAR(radToDeg(rec.cog()), 90.0, 1e-9);
+  EXPECT_NEAR(rec.path_length, 750.0, 1e-6);
+  EXPECT_FALSE(rec.arrived);
+  for (int i = 0; i < 600; ++i)
+    sim.step();
+  EXPECT_TRUE(sim.find("rec")->arrived);
+  EXPECT_NEAR(sim.find("rec")->arrival_time, 200.0, 0.11);
+}
+
+TEST(ScenarioFromAis, TrackKeyErrorsNameTheKey) {
+  const std::string head =
+      "format: 1\nname: t\nduration_s: 600\nown_ship: {name: own, position: {x_m: 0, y_m: 0}, course_deg: 0, "
+      "speed_kn: 5}\ntargets:\n  - {name: a, position: {x_m: 900, y_m: 0}, course_deg: 0, speed_kn: 1, ";
+  auto error = [&](const std::string& rest) {
+    try {
+      parseScenario(head + rest + "}\n");
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error("behaviour: track, track: [{t_s: 20, x_m: 0, y_m: 0}, {t_s: 10, x_m: 1, y_m: 0}]")
+                .find("'targets[0].track[1].t_s': times must be > 0"),
+            std::string::npos);
+  EXPECT_NE(error("behaviour: track").find("'targets[0].track': behaviour track needs"), std::string::npos);
+  EXPECT_NE(error("track: [{t_s: 1, x_m: 0, y_m: 0}]").find("only for behaviour: track"), std::string::npos);
+  EXPECT_NE(error("behaviour: track, track: [{t_s: 1, x_m: 0, z_m: 0}]").find("unknown key"),
+            std::string::npos);
+}
+
+// Vessel 1 sails north on the meridian of the origin, reporting 30 s before and after the start (so at
+// t = 0 she is midway); vessel 2 lies still; 3 first reports after the start; 4 is 20 km away.
+TEST(ScenarioFromAis, WindowBecomesTargetsPlacedByInterpolation) {
+  AisLogStats st;
+  const auto log = readCsv(
+      row(4, 30, 40.600, -74.0, 111111111, 12.0, 0.0, "NORTH BOUND", "50") +
+          row(5, 30, 40.602, -74.0, 111111111, 12.0, 0.0, "NORTH BOUND", "50") +
+          row(6, 30, 40.604, -74.0, 111111111, 12.0, 0.0, "NORTH BOUND", "50") +
+          row(3, 0, 40.610, -74.01, 222222222, 0.0, 10.0) + row(8, 0, 40.610, -74.01, 222222222, 0.1, 10.0) +
+          row(5, 10, 40.605, -74.0, 333333333, 8.0, 90.0) + row(6, 10, 40.605, -73.99, 333333333, 8.0, 90.0) +
+          row(4, 0, 40.800, -74.0, 444444444, 8.0, 90.0) + row(6, 0, 40.800, -73.99, 444444444, 8.0, 90.0),
+      st);
+  AisScenarioOptions o;
+  o.start = kT0 + 300.0;
+  o.duration = 600.0;
+  o.own_start = GeoPoint{40.590, -74.005};
+  o.own_goal = GeoPoint{40.620, -74.005};
+  o.origin = GeoPoint{40.600, -74.0};
+  const AisScenarioResult r = scenarioFromAis(log, o);
+  EXPECT_EQ(r.vessels_seen, 4u);
+  EXPECT_EQ(r.tracks, 1u);
+  EXPECT_EQ(r.stationary, 1u);
+  EXPECT_EQ(r.skipped.at("first report after the start (ships exist from t = 0)"), 1u);
+  EXPECT_EQ(r.skipped.at("farther than the radius from the own ship's route"), 1u);
+  ASSERT_EQ(r.scenario.targets.size(), 2u);
+  const ScenarioShip& north = r.scenario.targets[0];
+  EXPECT_EQ(north.name, "north_bound");
+  EXPECT_EQ(north.behaviour, Behaviour::Track);
+  EXPECT_DOUBLE_EQ(north.length, 50.0);
+  const LocalFrame f = r.scenario.frame();
+  const Eigen::Vector2d mid = 0.5 * (f.toLocal(40.600, -74.0) + f.toLocal(40.602, -74.0));
+  EXPECT_NEAR((north.position - mid).norm(), 0.0, 1e-6);
+  ASSERT_EQ(north.track.size(), 2u);  // 00:05:30 and 00:06:30, relative to the start at 00:05:00
+  EXPECT_DOUBLE_EQ(north.track[0].t, 30.0);
+  EXPECT_DOUBLE_EQ(north.track[1].t, 90.0);
+  // 0.002 deg of latitude per minute is 222 m / 60 s = 3.70 m/s (111.0 km per degree near 40.6 N).
+  EXPECT_NEAR(north.speed, 3.70, 0.02);
+  EXPECT_NEAR(wrapPi(north.course), 0.0, 1e-3);  // due north (just under 2 pi is north too)
+  const ScenarioShip& still = r.scenario.targets[1];
+  EXPECT_EQ(still.name, "mmsi_222222222");
+  EXPECT_EQ(still.behaviour, Behaviour::Constant);
+  EXPECT_EQ(still.speed, 0.0);
+  EXPECT_DOUBLE_EQ(still.length, o.default_length_m);
+  // Written and read back: the same tracks to the file's 0.1 m.
+  const Scenario back = parseScenario(scenarioToYaml(r.scenario));
+  ASSERT_EQ(back.targets[0].track.size(), 2u);
+  EXPECT_NEAR((back.targets[0].track[1].position - north.track[1].position).norm(), 0.0, 0.1);
+  EXPECT_EQ(back.targets[0].mmsi, 111111111u);
+}
+
+TEST(ScenarioFromAis, OwnShipTakesALoggedVesselsPlace) {
+  AisLogStats st;
+  const auto log = readCsv(row(4, 30, 40.600, -74.0, 111111111, 12.0, 0.0, "FERRY", "84") +
+                               row(5, 30, 40.602, -74.0, 111111111, 12.0, 0.0, "FERRY", "84") +
+                               row(15, 30, 40.622, -74.0, 111111111, 12.0, 0.0, "FERRY", "84") +
+                               row(4, 0, 40.605, -74.003, 222222222, 9.0, 0.0) +
+                               row(6, 0, 40.608, -74.003, 222222222, 9.0, 0.0),
+                           st);
+  AisScenarioOptions o;
+  o.start = kT0 + 300.0;
+  o.duration = 600.0;
+  o.own_mmsi = 111111111;
+  const AisScenarioResult r = scenarioFromAis(log, o);
+  ASSERT_EQ(r.scenario.targets.size(), 1u);
+  EXPECT_EQ(r.scenario.targets[0].mmsi, 222222222u);
+  const ScenarioShip& own = r.scenario.own;
+  EXPECT_EQ(own.mmsi, 111111111u);
+  EXPECT_DOUBLE_EQ(own.length, 84.0);
+  EXPECT_NEAR(own.speed, knotsToMps(12.0), 1e-12);
+  const LocalFrame f = r.scenario.frame();
+  // t = 0 at 00:05:00, midway between 00:04:30 and 00:05:30; the goal is her place at 00:15:00,
+  // 570 s into the 600 s leg from 00:05:30 to 00:15:30.
+  EXPECT_NEAR((own.position - f.toLocal(40.601, -74.0)).norm(), 0.0, 0.5);
+  EXPECT_NEAR((*own.goal - f.toLocal(40.602 + 0.020 * 570.0 / 600.0, -74.0)).norm(), 0.0, 0.5);
+  o.own_mmsi = 999;  // not in the log
+  EXPECT_THROW(scenarioFromAis(log, o), std::invalid_argument);
+  o.own_mmsi = 0;
+  o.own_start = GeoPoint{40.590, -74.005};
+  o.own_goal = GeoPoint{40.620, -74.005};
+  o.start = kT0 + 86400.0;  // a day later: nobody there, and the message says where the log is
+  try {
+    scenarioFromAis(log, o);
+    ADD_FAILURE() << "no error for an empty window";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("2020-06-30T00:04:00Z to 2020-06-30T00:15:30Z"), std::string::npos)
+        << e.what();
+  }
+}
+
+// The real New York hour (skips visibly without it): a ferry's recorded report is a point of her
+// track, its COG repaired (-179.6 -> 230.0).
+TEST(ScenarioFromAis, NewYorkFerryFollowsHerReports) {
+  const std::string csv = std::string(ASV_SHARED_DIR) + "/data/ais/real/NYHarbor_2020_06_30_first_hour.csv";
+  std::ifstream in(csv);
+  if (!in)
+    GTEST_SKIP() << "the New York AIS file is not present (" << csv << ")";
+  AisLogStats st;
+  const auto log = readMarineCadastreCsv(in, st);
+  EXPECT_EQ(st.rows, 8689u);  // the file's README
+  bool seen = false;
+  for (const auto& rep : log)
+    if (rep.mmsi == 367000150 && rep.time == kT0 + 380.0) {  // ANDREW J BARBERI at 00:06:20
+      seen = true;
+      EXPECT_NEAR(*rep.cog_deg, 230.0, 1e-9);
+    }
+  EXPECT_TRUE(seen);
+  AisScenarioOptions o;
+  o.start = kT0 + 240.0;
+  o.duration = 1500.0;
+  o.own_mmsi = 367000190;  // JOHN F KENNEDY, St George to Whitehall
+  const AisScenarioResult r = scenarioFromAis(log, o);
+  const LocalFrame f = r.scenario.frame();
+  const ScenarioShip* barberi = nullptr;
+  for (const auto& t : r.scenario.targets)
+    if (t.mmsi == 367000150)
+      barberi = &t;
+  ASSERT_NE(barberi, nullptr);
+  EXPECT_EQ(barberi->name, "andrew_j_barberi");
+  bool point = false;
+  for (const auto& p : barberi->track)
+    if (p.t == 140.0)
+      point = (p.position - f.toLocal(40.69194, -74.03128)).norm() < 1e-6;
+  EXPECT_TRUE(point);
+}
