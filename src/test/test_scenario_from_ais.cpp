@@ -193,6 +193,14 @@ TEST(ScenarioFromAis, WindowBecomesTargetsPlacedByInterpolation) {
   ASSERT_EQ(back.targets[0].track.size(), 2u);
   EXPECT_NEAR((back.targets[0].track[1].position - north.track[1].position).norm(), 0.0, 0.1);
   EXPECT_EQ(back.targets[0].mmsi, 111111111u);
+  // A berth the chart draws as land: the stopped vessel on it is left out, the moving one is kept.
+  const Eigen::Vector2d berth = still.position;
+  o.land = {{"land 1", {berth + Eigen::Vector2d(-50, -50), berth + Eigen::Vector2d(50, -50),
+                        berth + Eigen::Vector2d(50, 50), berth + Eigen::Vector2d(-50, 50)}}};
+  const AisScenarioResult on_land = scenarioFromAis(log, o);
+  ASSERT_EQ(on_land.scenario.targets.size(), 1u);
+  EXPECT_EQ(on_land.scenario.targets[0].name, "north_bound");
+  EXPECT_EQ(on_land.skipped.at("stopped on chart land (a berth the chart draws as land)"), 1u);
 }
 
 TEST(ScenarioFromAis, OwnShipTakesALoggedVesselsPlace) {

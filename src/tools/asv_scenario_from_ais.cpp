@@ -160,17 +160,19 @@ std::string baseName(const std::string& path) {
   return dot == std::string::npos ? b : b.substr(0, dot);
 }
 
-// The file as the stack will read it, with its land: the own ship must start and end afloat.
-void checkLoads(const std::string& yaml, const Args& a) {
+// The file as the stack will read it, with its land: the own ship must start and end afloat. Returns
+// the land (none without charts).
+std::vector<StaticObstacle> checkLoads(const std::string& yaml, const Args& a) {
   Scenario s = parseScenario(yaml, a.out);
   if (!s.charts)
-    return;
+    return {};
   ChartOptions co;
   co.cache_dir = a.cache;
   loadCharts(s, co);
   for (const auto& ob : s.obstacles)
     if (pointInPolygon(ob.polygon, *s.own.goal))
       throw std::invalid_argument("the own ship's goal is on land (" + ob.name + "): choose another");
+  return s.obstacles;
 }
 
 int run(Args& a) {
@@ -189,7 +191,10 @@ int run(Args& a) {
     spec.radius_m = 0.0;  // scenarioFromAis: the route plus the radius
     a.o.charts = spec;
   }
-  const AisScenarioResult r = scenarioFromAis(log, a.o);
+  // Twice: the first scenario gives the chart's area, whose land then leaves out ships at berths.
+  AisScenarioResult r = scenarioFromAis(log, a.o);
+  a.o.land = checkLoads(scenarioToYaml(r.scenario), a);
+  r = scenarioFromAis(log, a.o);
   const std::string yaml = scenarioToYaml(r.scenario);
   checkLoads(yaml, a);
   std::ofstream out(a.out);

@@ -456,8 +456,14 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
       ++res.skipped[skip];
       continue;
     }
+    const bool still = stationary(v, s, o);
+    if (still && std::any_of(o.land.begin(), o.land.end(),
+                             [&](const StaticObstacle& l) { return pointInPolygon(l.polygon, s.position); })) {
+      ++res.skipped["stopped on chart land (a berth the chart draws as land)"];
+      continue;
+    }
     s.name = shipName(*v.reports.back(), names);
-    if (stationary(v, s, o)) {
+    if (still) {
       s.behaviour = Behaviour::Constant;
       s.track.clear();
       s.speed = 0.0;

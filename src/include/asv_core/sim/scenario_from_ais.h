@@ -75,6 +75,10 @@ struct AisScenarioOptions {
   std::optional<GeoPoint> origin;   // default: midway between the own ship's start and goal
   std::optional<ChartSpec> charts;  // radius_m 0: covers the route plus radius_m
   double clearance_m = 100.0;       // the obstacle clearance written with charts
+  // Land in the scenario's frame (the charts' polygons, loaded by the caller): a stopped vessel whose
+  // place is on it is left out. Berths are land on a small-scale chart (GSHHG draws piers as land), and
+  // the land already keeps the own ship away from them.
+  std::vector<StaticObstacle> land;
 };
 
 struct AisScenarioResult {
