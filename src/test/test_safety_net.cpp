@@ -102,6 +102,20 @@ TEST(SafetyNet, AStraightOnPlanIntoAHeadOnShipIsReplacedByAStarboardManoeuvre) {
   EXPECT_GE(flownSeparation(p, pr), 926.0);
 }
 
+// A manoeuvre renewed while the ship is already turned away (heading 040 after an earlier one) is
+// measured from the way to the goal (000), not from her heading: 030 again, not 070. From her heading,
+// each renewal added 30 deg more and the ship turned full circles in crowded waters.
+TEST(SafetyNet, ARenewedManoeuvreIsMeasuredFromTheWayNotTheHeading) {
+  PlanningProblem pr = headOn();
+  pr.own.course = pr.own.heading = degToRad(40.0);
+  const Plan p = separationManoeuvre(pr, 0.0, "renewed");
+  EXPECT_NEAR(p.course_setpoint, degToRad(30.0), 1e-9) << p.message;
+  EXPECT_GE(flownSeparation(p, pr), 926.0);
+  // With a land route the way is its next point: due east of the ship, so 090 + 30 = 120.
+  pr.route = {{3000.0, 0.0}};
+  EXPECT_NEAR(separationManoeuvre(pr, 0.0, "route").course_setpoint, degToRad(120.0), 1e-9);
+}
+
 TEST(SafetyNet, NoSolutionBecomesTheManoeuvreAndWithoutAMinimumNothingChanges) {
   PlanningProblem pr = headOn();
   auto none = [](const PlanningProblem&) {

@@ -153,13 +153,22 @@ double holdUntilPast(const PlanningProblem& pr, const Eigen::Vector2d& velocity,
   return std::min(hold, pr.prediction_horizon);
 }
 
-// The candidate flown: the new course and speed for `hold` seconds, then (the follower's way past a
-// plan) straight for the goal at the cruising speed. A stop is a Fallback: the follower holds still
+// What the net's alterations are measured from: the course to the next point of the way (the land
+// route's, else the goal). Measured from the ship's heading instead, a manoeuvre renewed at every
+// replan adds its turn again each time, and in crowded waters the ship turned full circles.
+double wayCourse(const PlanningProblem& pr) {
+  const Eigen::Vector2d next = pr.route.empty() ? pr.goal : pr.route.front();
+  const Eigen::Vector2d to = next - pr.own.position;
+  return to.norm() > 1.0 ? courseOf(to) : pr.own.course;
+}
+
+// The candidate flown: `base` + its turn at its speed for `hold` seconds, then (the follower's way past
+// a plan) straight for the goal at the cruising speed. A stop is a Fallback: the follower holds still
 // and keeps asking the planner.
-Plan manoeuvrePlan(const PlanningProblem& pr, const Candidate& c, double hold) {
+Plan manoeuvrePlan(const PlanningProblem& pr, double base, const Candidate& c, double hold) {
   Plan p;
   p.status = c.speed_factor > 0.0 ? PlanStatus::Ok : PlanStatus::Fallback;
-  p.course_setpoint = wrapTwoPi(pr.own.course + c.turn);
+  p.course_setpoint = wrapTwoPi(base + c.turn);
   p.speed_setpoint = c.speed_factor > 0.0 ? pr.own.speed : 0.0;  // past the leg: cruising speed again
   PlannedWaypoint start, leg;
   start.position = pr.own.position;
@@ -175,9 +184,9 @@ Plan manoeuvrePlan(const PlanningProblem& pr, const Candidate& c, double hold) {
 
 // The candidate's hold times, shortest first: a short leg that gains enough room is the smaller
 // deviation; the last holds until every target is past.
-std::vector<double> holdTimes(const PlanningProblem& pr, const Candidate& c) {
+std::vector<double> holdTimes(const PlanningProblem& pr, double base, const Candidate& c) {
   const double past =
-      holdUntilPast(pr, courseSpeedToVelocity(pr.own.course + c.turn, pr.own.speed * c.speed_factor), pr.targets);
+      holdUntilPast(pr, courseSpeedToVelocity(base + c.turn, pr.own.speed * c.speed_factor), pr.targets);
   std::vector<double> out;
   for (double h : {kShortestHold, 2.0 * kShortestHold, 600.0})
     if (h < past)
@@ -189,7 +198,7 @@ std::vector<double> holdTimes(const PlanningProblem& pr, const Candidate& c) {
 }  // namespace
 
 Plan holdCoursePlan(const PlanningProblem& pr, const std::vector<PlannerTarget>& until_past) {
-  Plan p = manoeuvrePlan(pr, {0.0, 1.0}, holdUntilPast(pr, pr.own.velocity(), until_past));
+  Plan p = manoeuvrePlan(pr, pr.own.course, {0.0, 1.0}, holdUntilPast(pr, pr.own.velocity(), until_past));
   p.message = "hold course and speed";
   return p;
 }
@@ -217,9 +226,10 @@ Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const
   // The first candidate that keeps the margin, in the order of preference; else the first that keeps
   // the minimum; else the one that keeps farthest, or stopping when that keeps farther still.
   std::optional<std::pair<Plan, double>> first_minimum, farthest;
+  const double base = wayCourse(pr);
   for (const Candidate& c : candidates())
-    for (double hold : holdTimes(pr, c)) {
-      const Plan p = manoeuvrePlan(pr, c, hold);
+    for (double hold : holdTimes(pr, base, c)) {
+      const Plan p = manoeuvrePlan(pr, base, c, hold);
       if (!clearOfLand(p))
         continue;
       const double clearance = planSeparation(p, pr);
@@ -234,7 +244,7 @@ Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const
     return described(first_minimum->first, pr, first_minimum->second, why);
   const double stop_clearance = routeClearance({{pr.own.position}, {}}, pr.targets, pr.prediction_horizon);
   if (!farthest || stop_clearance > farthest->second)
-    return described(manoeuvrePlan(pr, {0.0, 0.0}, 0.0), pr, stop_clearance, why);
+    return described(manoeuvrePlan(pr, base, {0.0, 0.0}, 0.0), pr, stop_clearance, why);
   return described(farthest->first, pr, farthest->second, why);
 }
 

@@ -55,7 +55,9 @@ Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTar
 // The separation net's manoeuvre: the first of these that keeps every target of the problem at least
 // kSeparationMargin x min_separation away and the track `land_clearance` off land (0: no land check),
 // in this order (COLREGs preference: Rules 8, 14-17): 30 to 90 deg to starboard at full speed, the
-// same at half speed, half speed on the present course, 30 to 90 deg to port, stop. The ship holds
+// same at half speed, half speed on the way, 30 to 90 deg to port, stop; the turns are measured from
+// the course to the next point of the way (land route or goal), so a renewed manoeuvre does not add
+// its turn to the last one's. The ship holds
 // the new course until every target is past and then steers for the goal. When none keeps the margin,
 // the one that keeps the ship farthest from every target. Status Ok (Fallback when it stops); `why`
 // goes into the message.
