@@ -58,6 +58,7 @@ test: build
 	@$(DEVEL) && $(CATKIN) run_tests -j1 > build/run_tests.log 2>&1 || true
 	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING|ModuleNotFoundError|ImportError" build/run_tests.log || true
 	@scripts/fuzz_smoke.sh || true
+	@scripts/catkin_lint_check.py build/test_results/catkin_lint.xml || true
 	@if [ "$(ASAN)" = 1 ]; then echo "test: asv_core unit tests under ASan+UBSan (build_asan/, log build/asan.log)..."; \
 	  JOBS=$(JOBS) scripts/asan_tests.sh > build/asan.log 2>&1 || true; fi
 	@scripts/test_summary.py build/test_results
