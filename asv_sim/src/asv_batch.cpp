@@ -54,8 +54,10 @@ const char* kUsage =
     "  --seed S             first seed (default 1)\n"
     "  --runs N             runs with seeds S .. S+N-1 (default 1)\n"
     "  --json OUT           append the results to OUT (JSON Lines); default: stdout\n"
-    "  --trajectory CSV     write t_s,ship,x_m,y_m,course_deg,speed_mps rows (every --sample-period);\n"
-    "                       with --runs > 1 the seed goes into the name: CSV_seed<S>.csv\n"
+    "  --trajectory CSV     write t_s,ship,x_m,y_m,course_deg,speed_mps,lat_deg,lon_deg rows (every\n"
+    "                       --sample-period); with --runs > 1 the seed goes into the name: CSV_seed<S>.csv\n"
+    "  --geojson FILE       write the run as GeoJSON for a GIS (tracks, closest approaches, manoeuvres,\n"
+    "                       land; longitude/latitude); with --runs > 1 named as --trajectory\n"
     "  --dt DT              integration step [s] (default 0.1)\n"
     "  --sample-period P    trajectory CSV period [s] (default 5)\n"
     "  --time-budget S      wall time per plan [s] (default 0.5, planner_node's)\n"
@@ -67,7 +69,7 @@ const char* kUsage =
     "exit status: 0 done (whatever the runs' outcomes), 2 bad arguments, scenario or planner, 1 failure.\n";
 
 struct Options {
-  std::string scenario, planner, json, trajectory, agents;
+  std::string scenario, planner, json, trajectory, geojson, agents;
   bool planner_given = false;
   asv::ChartOptions charts;
   std::vector<std::pair<std::string, std::string>> params;  // "planner/key", value
@@ -137,6 +139,8 @@ Options parseArgs(int argc, char** argv) {
       o.json = value();
     } else if (a == "--trajectory") {
       o.trajectory = value();
+    } else if (a == "--geojson") {
+      o.geojson = value();
     } else if (a == "--dt") {
       o.dt = parseNumber(a, value());
       if (!(o.dt > 0.0 && o.dt <= 10.0))
@@ -178,10 +182,10 @@ asv::DssaConfig dssaConfig(const std::string& planner, const asv::ParamMap& scen
   return asv::DssaConfig::fromParams(p);
 }
 
-std::string trajectoryPath(const Options& o, uint64_t seed) {
+// An output file's name for one seed: as given for a single run, else with _seed<S> before the suffix.
+std::string seedPath(const Options& o, const std::string& t, uint64_t seed) {
   if (o.runs == 1)
-    return o.trajectory;
-  const std::string& t = o.trajectory;
+    return t;
   const size_t dot = t.rfind('.');
   const size_t slash = t.rfind('/');
   const std::string suffix = "_seed" + std::to_string(seed);
@@ -352,11 +356,11 @@ void BatchRun::addDssaGroup() {
 void BatchRun::openTrajectory() {
   if (o_.trajectory.empty())
     return;
-  const std::string path = trajectoryPath(o_, seed_);
+  const std::string path = seedPath(o_, o_.trajectory, seed_);
   traj_.open(path);
   if (!traj_)
     throw std::runtime_error("cannot write trajectory file " + path);
-  traj_ << "t_s,ship,x_m,y_m,course_deg,speed_mps\n";
+  traj_ << "t_s,ship,x_m,y_m,course_deg,speed_mps,lat_deg,lon_deg\n";
 }
 
 void BatchRun::writeTrajectory() {
@@ -364,8 +368,9 @@ void BatchRun::writeTrajectory() {
     return;
   char buf[256];
   for (const auto& v : sim_.vessels()) {
-    std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.2f\n", sim_.time(), v.name.c_str(),
-                  v.position().x(), v.position().y(), asv::radToDeg(v.cog()), v.sog());
+    const asv::GeoPoint g = sim_.frame().toGeodetic(v.position());
+    std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.2f,%.7f,%.7f\n", sim_.time(), v.name.c_str(),
+                  v.position().x(), v.position().y(), asv::radToDeg(v.cog()), v.sog(), g.lat_deg, g.lon_deg);
     traj_ << buf;
   }
 }
@@ -488,6 +493,13 @@ asv::RunResult BatchRun::run(Progress& progress, int run_index) {
   asv::RunResult r = rec_.finish();
   if (o_.deterministic)
     asv::zeroWallClock(r);
+  if (!o_.geojson.empty()) {
+    const std::string path = seedPath(o_, o_.geojson, seed_);
+    std::ofstream g(path);
+    g << rec_.geoJson(r);
+    if (!g)
+      throw std::runtime_error("cannot write GeoJSON file " + path);
+  }
   return r;
 }
 

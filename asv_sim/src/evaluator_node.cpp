@@ -135,6 +135,25 @@ void EvaluatorNode::cmdCallback(const asv_msgs::CourseSpeedSetpoint::ConstPtr& m
     recorder_->addSetpoint(simTime(msg->header.stamp), params_.own_ship, msg->course);
 }
 
+// Writes one output file (its folders created); "" = not asked for. A failure is an error on screen,
+// never a crash at the end of a run.
+void EvaluatorNode::writeOutput(const std::string& file, const std::string& text, const char* what) {
+  if (file.empty())
+    return;
+  try {
+    const std::filesystem::path path(file);
+    if (path.has_parent_path())
+      std::filesystem::create_directories(path.parent_path());
+    std::ofstream f(file);
+    f << text;
+    if (!f)
+      throw std::runtime_error("write failed");
+    ROS_INFO("evaluator_node: %s written to %s", what, file.c_str());
+  } catch (const std::exception& e) {
+    ROS_ERROR("evaluator_node: cannot write %s %s: %s", what, file.c_str(), e.what());
+  }
+}
+
 void EvaluatorNode::finish() {
   done_ = true;
   if (!recorder_) {
@@ -145,20 +164,8 @@ void EvaluatorNode::finish() {
     std::istringstream table(asv::summaryTable(r));
     for (std::string line; std::getline(table, line);)
       ROS_INFO("evaluator_node: %s", line.c_str());
-    if (!params_.result.empty()) {
-      try {
-        const std::filesystem::path path(params_.result);
-        if (path.has_parent_path())
-          std::filesystem::create_directories(path.parent_path());
-        std::ofstream f(params_.result);
-        f << asv::toJson(r, params_.pretty) << "\n";
-        if (!f)
-          throw std::runtime_error("write failed");
-        ROS_INFO("evaluator_node: result written to %s", params_.result.c_str());
-      } catch (const std::exception& e) {
-        ROS_ERROR("evaluator_node: cannot write %s: %s", params_.result.c_str(), e.what());
-      }
-    }
+    writeOutput(params_.result, asv::toJson(r, params_.pretty) + "\n", "result");
+    writeOutput(params_.geojson, recorder_->geoJson(r), "GeoJSON");
   }
   if (params_.shutdown_at_end)
     ros::shutdown();

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <map>
 
+#include <yaml-cpp/yaml.h>
+
 #include "asv_core/eval/evaluation.h"
 
 using namespace asv;
@@ -35,6 +37,7 @@ RunRecorder record(const Script& s, const EvaluationConfig& cfg = {},
   info.planner = "test";
   info.seed = 7;
   info.ships = {{"own", std::nullopt, "test"}, {"ts1", std::nullopt, ""}};
+  info.origin = {54.0, 3.0};  // the open North Sea
   RunRecorder rec(cfg, info);
   Eigen::Vector2d po = s.own0, pt = s.tgt0;
   const double ct = degToRad(s.tgt_course_deg);
@@ -404,4 +407,51 @@ TEST(Evaluation, ConfigValidatesAndReadsParams) {
   ParamMap typo;
   typo.set("apparent_course", 20.0);
   EXPECT_THROW(EvaluationConfig::fromParams(typo), std::invalid_argument);
+}
+
+// The closest approach of a crossing, by hand: own north from (0, 0), target west from (5000, 5300),
+// both 5 m/s; relative position (5000 - 5t, 5300 - 5t) is shortest at t = 1030 s, 212.1 m, with the own
+// ship at (0, 5150) and the target at (-150, 5300). In latitude/longitude from 54 N 3 E (one degree of
+// latitude 111,305 m there, from the meridian arc series; one of longitude 65,576 m at 54 N, x cos
+// ratio to the target's 54.0476 N = 65,501 m): own 54.046270 N 3.000000 E, target 54.047618 N
+// 2.997710 E.
+TEST(Evaluation, ClosestApproachAndGeoJsonAreInLatitudeLongitude) {
+  Script s;
+  s.tgt0 = {5000.0, 5300.0};
+  RunRecorder rec = record(s);
+  const RunResult r = rec.finish();
+  ASSERT_EQ(r.own.targets.size(), 1u);
+  const TargetResult& t = r.own.targets[0];
+  EXPECT_DOUBLE_EQ(t.closest_time, 1030.0);
+  EXPECT_NEAR(t.min_distance, 212.13, 0.01);
+  EXPECT_NEAR((t.own_at_closest - Eigen::Vector2d(0.0, 5150.0)).norm(), 0.0, 1e-6);
+  EXPECT_NEAR((t.target_at_closest - Eigen::Vector2d(-150.0, 5300.0)).norm(), 0.0, 1e-6);
+  const YAML::Node j = YAML::Load(toJson(r));
+  const YAML::Node ca = j["targets"][0]["closest_approach"];
+  EXPECT_DOUBLE_EQ(ca["t_s"].as<double>(), 1030.0);
+  EXPECT_NEAR(ca["own"]["lat_deg"].as<double>(), 54.0 + 5150.0 / 111305.0, 2e-6);
+  EXPECT_NEAR(ca["own"]["lon_deg"].as<double>(), 3.0, 1e-7);
+  EXPECT_NEAR(ca["target"]["lat_deg"].as<double>(), 54.0 + 5300.0 / 111305.0, 2e-6);
+  EXPECT_NEAR(ca["target"]["lon_deg"].as<double>(), 3.0 - 150.0 / 65501.0, 2e-6);
+  // GeoJSON: two tracks, the closest approach as a point and a line, longitude first.
+  const YAML::Node g = YAML::Load(rec.geoJson(r));
+  EXPECT_EQ(g["type"].as<std::string>(), "FeatureCollection");
+  std::map<std::string, int> kinds;
+  for (const auto& f : g["features"]) {
+    const std::string k = f["properties"]["kind"].as<std::string>();
+    ++kinds[k];
+    if (k == "closest_approach") {
+      EXPECT_EQ(f["geometry"]["type"].as<std::string>(), "Point");
+      EXPECT_NEAR(f["geometry"]["coordinates"][0].as<double>(), 3.0, 1e-7);
+      EXPECT_NEAR(f["geometry"]["coordinates"][1].as<double>(), 54.0 + 5150.0 / 111305.0, 2e-6);
+      EXPECT_NEAR(f["properties"]["distance_m"].as<double>(), 212.1, 0.05);
+    }
+    if (k == "track") {
+      EXPECT_GE(f["geometry"]["coordinates"].size(), 2u);
+    }
+  }
+  EXPECT_EQ(kinds["track"], 2);
+  EXPECT_EQ(kinds["closest_approach"], 1);
+  EXPECT_EQ(kinds["closest_approach_line"], 1);
+  EXPECT_EQ(kinds["manoeuvre"], 0);  // she held her course
 }

@@ -42,6 +42,7 @@ private:
   void cmdCallback(const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg);
   void start(const asv_msgs::TargetArray& first);
   void finish();
+  void writeOutput(const std::string& file, const std::string& text, const char* what);
   double simTime(const ros::Time& stamp) const { return stamp.toSec() - params_.time_origin; }
 
   ros::NodeHandle nh_, pnh_;

@@ -210,10 +210,19 @@ void write(const Json& j, bool pretty, int indent, std::string& out) {
   }
 }
 
-// Precisions: metres and seconds 0.1, degrees 0.1, ratios and scores 1e-4, milliseconds 1e-3.
-constexpr int kMetres = 1, kSeconds = 1, kDegrees = 1, kRatio = 4, kMs = 3;
+// Precisions: metres and seconds 0.1, degrees 0.1, ratios and scores 1e-4, milliseconds 1e-3,
+// latitude/longitude 1e-7 deg (1 cm).
+constexpr int kMetres = 1, kSeconds = 1, kDegrees = 1, kRatio = 4, kMs = 3, kLatLon = 7;
 
-Json targetJson(const TargetResult& t) {
+Json latLonJson(const LocalFrame& frame, const Eigen::Vector2d& p) {
+  const GeoPoint g = frame.toGeodetic(p);
+  Json o = Json::object();
+  o.add("lat_deg", Json::number(g.lat_deg, kLatLon));
+  o.add("lon_deg", Json::number(g.lon_deg, kLatLon));
+  return o;
+}
+
+Json targetJson(const TargetResult& t, const LocalFrame& frame) {
   Json o = Json::object();
   o.add("name", Json::string(t.name));
   o.add("encounter", Json::string(encounterName(t.encounter)));
@@ -221,6 +230,13 @@ Json targetJson(const TargetResult& t) {
   o.add("min_distance_m", Json::number(t.min_distance, kMetres));
   o.add("tcpa_at_start_s", Json::number(t.tcpa_at_start, kSeconds));
   o.add("dcpa_at_start_m", Json::number(t.dcpa_at_start, kMetres));
+  if (std::isfinite(t.closest_time)) {
+    Json c = Json::object();
+    c.add("t_s", Json::number(t.closest_time, kSeconds));
+    c.add("own", latLonJson(frame, t.own_at_closest));
+    c.add("target", latLonJson(frame, t.target_at_closest));
+    o.add("closest_approach", c);
+  }
   o.add("colregs_ok", Json::boolean(t.colregs_ok));
   Json notes = Json::array();
   for (const auto& n : t.notes)
@@ -241,10 +257,10 @@ Json manoeuvresJson(const std::vector<Manoeuvre>& ms) {
   return a;
 }
 
-Json targetsJson(const std::vector<TargetResult>& ts) {
+Json targetsJson(const std::vector<TargetResult>& ts, const LocalFrame& frame) {
   Json a = Json::array();
   for (const auto& t : ts)
-    a.arr.push_back(targetJson(t));
+    a.arr.push_back(targetJson(t, frame));
   return a;
 }
 
@@ -359,6 +375,7 @@ RunInfo RunInfo::fromScenario(const Scenario& sc, const std::string& planner, ui
   info.seed = seed;
   info.min_separation = sc.min_separation;
   info.obstacles = sc.obstacles;
+  info.origin = sc.origin;
   info.ships.push_back({sc.own.name, sc.own.goal, info.planner});
   for (const auto& t : sc.targets) {
     const bool plans = t.behaviour == Behaviour::Planner;
@@ -397,6 +414,7 @@ RunRecorder::RunRecorder(const EvaluationConfig& config, const RunInfo& info) : 
   const size_t n = info_.ships.size();
   tracks_.resize(n);
   min_dist_.assign(n, std::vector<double>(n, kFar));
+  closest_.assign(n, std::vector<Closest>(n));
   collided_.assign(n, std::vector<char>(n, 0));
   grounded_.assign(n, 0);
   min_obstacle_.assign(n, kFar);
@@ -447,6 +465,10 @@ void RunRecorder::addSample(double t, const std::vector<ShipSample>& ships) {
       if (i == j || !si->active || !sj->active)
         continue;
       const double d = (si->state.position - sj->state.position).norm();
+      if (d < min_dist_[i][j]) {
+        closest_[i][j] = {t, si->state.position, sj->state.position};
+        closest_[j][i] = {t, sj->state.position, si->state.position};
+      }
       min_dist_[i][j] = std::min(min_dist_[i][j], d);
       min_dist_[j][i] = min_dist_[i][j];
     }
@@ -692,6 +714,11 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
   TargetResult r;
   r.name = info_.ships[j].name;
   r.min_distance = min_dist_[i][j] < kFar ? min_dist_[i][j] : kNaN;
+  if (std::isfinite(r.min_distance)) {
+    r.closest_time = closest_[i][j].t;
+    r.own_at_closest = closest_[i][j].a;
+    r.target_at_closest = closest_[i][j].b;
+  }
   r.collision = collided_[i][j] != 0;
   r.safety = r.collision ? 0.0 : safetyScore(r.min_distance, r_pref_, r_min_, r_nm_, cfg_.safety_at_r_min);
   const Instants both = commonInstants(i, j);
@@ -788,6 +815,7 @@ RunResult RunRecorder::finish() const {
   r.scenario = info_.scenario;
   r.planner = info_.planner;
   r.seed = info_.seed;
+  r.origin = info_.origin;
   r.own = evaluateShip(0);
   r.own.planner = info_.planner;
   r.collision = r.own.collision;
@@ -821,6 +849,7 @@ void zeroWallClock(RunResult& r) {
 }
 
 std::string toJson(const RunResult& r, bool pretty) {
+  const LocalFrame frame(r.origin.lat_deg, r.origin.lon_deg);
   Json o = Json::object();
   o.add("scenario", Json::string(r.scenario));
   o.add("planner", Json::string(r.planner));
@@ -836,7 +865,7 @@ std::string toJson(const RunResult& r, bool pretty) {
   o.add("path_length_m", Json::number(r.own.path_length, kMetres));
   o.add("path_ratio", Json::number(r.own.path_ratio, kRatio));
   o.add("manoeuvres", manoeuvresJson(r.own.manoeuvres));
-  o.add("targets", targetsJson(r.own.targets));
+  o.add("targets", targetsJson(r.own.targets, frame));
   o.add("colregs_score", Json::number(r.own.colregs_score, kRatio));
   Json pt = Json::object();
   pt.add("median", Json::number(r.plan_time.median_ms, kMs));
@@ -859,7 +888,7 @@ std::string toJson(const RunResult& r, bool pretty) {
       e.add("path_length_m", Json::number(s.path_length, kMetres));
       e.add("path_ratio", Json::number(s.path_ratio, kRatio));
       e.add("manoeuvres", manoeuvresJson(s.manoeuvres));
-      e.add("targets", targetsJson(s.targets));
+      e.add("targets", targetsJson(s.targets, frame));
       e.add("colregs_score", Json::number(s.colregs_score, kRatio));
       ships.arr.push_back(e);
     }
@@ -868,6 +897,103 @@ std::string toJson(const RunResult& r, bool pretty) {
   std::string out;
   write(o, pretty, 0, out);
   return out;
+}
+
+namespace {
+
+// GeoJSON pieces (RFC 7946): positions [longitude, latitude], features with a "kind" property.
+Json lonLat(const LocalFrame& frame, const Eigen::Vector2d& p) {
+  const GeoPoint g = frame.toGeodetic(p);
+  Json a = Json::array();
+  a.arr.push_back(Json::number(g.lon_deg, kLatLon));
+  a.arr.push_back(Json::number(g.lat_deg, kLatLon));
+  return a;
+}
+
+Json feature(const std::string& type, Json coordinates, Json properties) {
+  Json geometry = Json::object();
+  geometry.add("type", Json::string(type));
+  geometry.add("coordinates", std::move(coordinates));
+  Json f = Json::object();
+  f.add("type", Json::string("Feature"));
+  f.add("geometry", std::move(geometry));
+  f.add("properties", std::move(properties));
+  return f;
+}
+
+Json kind(const std::string& k) {
+  Json p = Json::object();
+  p.add("kind", Json::string(k));
+  return p;
+}
+
+Json line(const LocalFrame& frame, const std::vector<Eigen::Vector2d>& points) {
+  Json a = Json::array();
+  for (const auto& p : points)
+    a.arr.push_back(lonLat(frame, p));
+  return a;
+}
+
+// The own ship's closest approach to one target: her position (a Point) and the line to the target.
+void closestApproach(const LocalFrame& frame, const TargetResult& t, Json& features) {
+  if (!std::isfinite(t.closest_time))
+    return;
+  Json p = kind("closest_approach");
+  p.add("target", Json::string(t.name));
+  p.add("distance_m", Json::number(t.min_distance, kMetres));
+  p.add("t_s", Json::number(t.closest_time, kSeconds));
+  features.arr.push_back(feature("Point", lonLat(frame, t.own_at_closest), p));
+  Json l = kind("closest_approach_line");
+  l.add("target", Json::string(t.name));
+  l.add("distance_m", Json::number(t.min_distance, kMetres));
+  features.arr.push_back(feature("LineString", line(frame, {t.own_at_closest, t.target_at_closest}), l));
+}
+
+}  // namespace
+
+std::string RunRecorder::geoJson(const RunResult& r) const {
+  const LocalFrame frame(info_.origin.lat_deg, info_.origin.lon_deg);
+  Json features = Json::array();
+  for (const StaticObstacle& o : info_.obstacles) {
+    std::vector<Eigen::Vector2d> ring = o.polygon;
+    if (!ring.empty())
+      ring.push_back(ring.front());  // a closed ring
+    Json rings = Json::array();
+    rings.arr.push_back(line(frame, ring));
+    Json p = kind("land");
+    p.add("name", Json::string(o.name));
+    features.arr.push_back(feature("Polygon", std::move(rings), p));
+  }
+  for (size_t i = 0; i < tracks_.size(); ++i) {
+    std::vector<Eigen::Vector2d> pts;
+    for (const Point& pt : tracks_[i].points)
+      pts.push_back(pt.s.position);
+    if (pts.size() < 2)
+      continue;
+    Json p = kind("track");
+    p.add("ship", Json::string(info_.ships[i].name));
+    p.add("own", Json::boolean(i == 0));
+    features.arr.push_back(feature("LineString", line(frame, pts), p));
+  }
+  for (const TargetResult& t : r.own.targets)
+    closestApproach(frame, t, features);
+  for (const Manoeuvre& m : r.own.manoeuvres) {
+    const auto& own = tracks_[0].points;
+    const auto at = std::lower_bound(own.begin(), own.end(), m.time,
+                                     [](const Point& p, double t) { return p.t < t; });
+    if (at == own.end())
+      continue;
+    Json p = kind("manoeuvre");
+    p.add("t_s", Json::number(m.time, kSeconds));
+    p.add("course_change_deg", Json::number(radToDeg(m.course_change), kDegrees));
+    features.arr.push_back(feature("Point", lonLat(frame, at->s.position), p));
+  }
+  Json fc = Json::object();
+  fc.add("type", Json::string("FeatureCollection"));
+  fc.add("features", std::move(features));
+  std::string out;
+  write(fc, false, 0, out);
+  return out + "\n";
 }
 
 std::string summaryLine(const RunResult& r) {

@@ -19,6 +19,7 @@ EvaluatorNodeConfig EvaluatorNodeConfig::fromParams(const ParamMap& p) {
   EvaluatorNodeConfig c;
   c.own_ship = p.getString("own_ship", c.own_ship);
   c.result = p.getString("result", c.result);
+  c.geojson = p.getString("geojson", c.geojson);
   c.scenario = p.getString("scenario", c.scenario);
   c.charts = ChartOptions::fromParams(p);
   c.planner = p.getString("planner", c.planner);

@@ -104,6 +104,7 @@ struct RunInfo {
   };
   std::vector<Ship> ships;  // ships[0] is the own ship; every sample lists ships by these names
   std::vector<StaticObstacle> obstacles;  // static obstacles (land), ENU [m]
+  GeoPoint origin;                        // of the ENU frame (the scenario's; 0 N 0 E without one)
 
   // From a scenario: the own ship first, then the targets in file order.
   static RunInfo fromScenario(const Scenario& scenario, const std::string& planner, uint64_t seed);
@@ -130,6 +131,10 @@ struct TargetResult {
   double min_distance = std::numeric_limits<double>::quiet_NaN();   // [m]
   double tcpa_at_start = std::numeric_limits<double>::quiet_NaN();  // [s]
   double dcpa_at_start = std::numeric_limits<double>::quiet_NaN();  // [m]
+  // Where the closest approach happened (the first sample at min_distance): time and both positions.
+  double closest_time = std::numeric_limits<double>::quiet_NaN();  // [s]
+  Eigen::Vector2d own_at_closest = Eigen::Vector2d::Zero();        // [m] ENU
+  Eigen::Vector2d target_at_closest = Eigen::Vector2d::Zero();     // [m] ENU
   bool evaluated = false;  // the entry criterion was met: the rules were checked
   bool collision = false;
   double safety = 1.0;  // [0, 1]
@@ -160,6 +165,7 @@ struct ShipResult {
 struct RunResult {
   std::string scenario, planner;
   uint64_t seed = 0;
+  GeoPoint origin;  // of the positions' ENU frame: the JSON gives them as latitude/longitude
   ShipResult own;
   bool collision = false;                // the own ship touched another ship
   int collisions_between_targets = 0;    // pairs of other ships that touched each other
@@ -197,6 +203,11 @@ public:
   double lastTime() const { return last_t_; }
   // Evaluates everything recorded so far.
   RunResult finish() const;
+  // The run as a GeoJSON FeatureCollection (RFC 7946, longitude/latitude WGS84) that any GIS opens:
+  // every ship's track (LineString, property "kind": "track"), the own ship's closest approach to
+  // each target ("closest_approach": a Point at the own ship with distance and time, and the
+  // LineString between the two ships), her manoeuvres (Points) and the land ("land" Polygons).
+  std::string geoJson(const RunResult& result) const;
 
 private:
   struct Point {
@@ -235,6 +246,11 @@ private:
   double r_pref_, r_min_, r_nm_;
   std::vector<Track> tracks_;
   std::vector<std::vector<double>> min_dist_;  // pairwise, while both active
+  struct Closest {
+    double t = 0.0;
+    Eigen::Vector2d a = Eigen::Vector2d::Zero(), b = Eigen::Vector2d::Zero();  // ship i's, ship j's
+  };
+  std::vector<std::vector<Closest>> closest_;  // [i][j]: where min_dist_[i][j] was reached
   std::vector<std::vector<char>> collided_;    // pairwise collision events
   std::vector<char> grounded_;                 // per ship: grounding event or hull on land
   std::vector<double> min_obstacle_;           // per ship [m]: hull to the nearest obstacle

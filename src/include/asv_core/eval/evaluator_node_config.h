@@ -13,6 +13,7 @@ namespace asv {
 struct EvaluatorNodeConfig {
   std::string own_ship = "own";  // id of the own ship in sim/ships
   std::string result;            // path of the result file ("" = do not write)
+  std::string geojson;           // path of the run as GeoJSON for a GIS ("" = do not write)
   std::string scenario;          // optional scenario file: name, goals, safety threshold, ship list
   ChartOptions charts;           // charts, chart_cache_dir: the land of the scenario's charts
   std::string planner;           // planner name for the result ("" = from <own>/plan or the scenario)
