@@ -5,7 +5,7 @@
 #   PLANNER   aco | dssa | dssa_plus | mopso | ga | "" (the scenario's own, default)
 #   RATE      simulation real-time factor (default 20)
 # Environment: RECORD_ARGS: more scenario.launch arguments (e.g. "max_sim_time:=1800").
-# Leaves out/SCENARIO/LABEL/{result.json,run.bag} and out/SCENARIO/LABEL.mp4 + .png (the final frame),
+# The mouse pointer is not drawn. Leaves out/SCENARIO/LABEL/{result.json,run.bag} and out/SCENARIO/LABEL.mp4 + .png (the final frame),
 # LABEL being the planner or "scenario". Needs a built workspace (make build) and xvfb, ffmpeg, rviz
 # (scripts/setup installs them).
 set -uo pipefail
@@ -34,7 +34,7 @@ roslaunch asv_bringup scenario.launch scenario:="$scenario" planner:="$planner" 
   rviz:=true record:=true out:="$out/$label" ${RECORD_ARGS:-} > "$out/$label/launch.log" 2>&1 &
 launch=$!
 sleep 6  # rviz needs a few seconds to open its window
-ffmpeg -nostdin -loglevel error -y -f x11grab -video_size 1280x720 -framerate 10 -i "$display" \
+ffmpeg -nostdin -loglevel error -y -f x11grab -draw_mouse 0 -video_size 1280x720 -framerate 10 -i "$display" \
   -c:v libx264 -preset veryfast -pix_fmt yuv420p "$out/$label.mp4" &
 ffmpeg_pid=$!
 wait $launch

@@ -126,6 +126,20 @@ class RecordReplay(unittest.TestCase):
                                "risk level/encounter/role equal in %d of %d" % (same_level, compared))
         return pairs, compared
 
+    def test_relative_bag_path_is_the_callers(self):
+        # rosbag runs in ROS_HOME: the launch resolves a relative bag:= against the caller's folder
+        # (the shell's PWD, as scenario.launch's out/), as the README's `replay.launch bag:=out/...` needs.
+        here = tempfile.mkdtemp(prefix="asv_replay_cwd_")
+        env = dict(os.environ, PWD=here)
+        args = subprocess.run(["roslaunch", "--args", "/rosbag_play", "asv_bringup", "replay.launch",
+                               "bag:=out/x/run.bag"], cwd=here, env=env, stdout=subprocess.PIPE,
+                              stderr=subprocess.STDOUT, timeout=60).stdout.decode(errors="replace")
+        self.assertIn(os.path.join(here, "out/x/run.bag"), args)
+        args = subprocess.run(["roslaunch", "--args", "/rosbag_play", "asv_bringup", "replay.launch",
+                               "bag:=" + self.bag_path], cwd=here, env=env, stdout=subprocess.PIPE,
+                              stderr=subprocess.STDOUT, timeout=60).stdout.decode(errors="replace")
+        self.assertIn(" %s " % self.bag_path, args)  # an absolute path stays as it is
+
     def test_replay_reproduces_recorded_risk(self):
         self.check_recording()
         replayed = {}
