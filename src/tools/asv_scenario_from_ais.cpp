@@ -8,6 +8,7 @@
 #include "asv_core/common/geometry.h"
 #include "asv_core/sim/scenario_from_ais.h"
 #include "asv_core/sim/scenario_write.h"
+#include "asv_core/sim/simulation.h"
 #include "tool_main.h"
 
 namespace {
@@ -164,6 +165,7 @@ std::string baseName(const std::string& path) {
 // the land (none without charts).
 std::vector<StaticObstacle> checkLoads(const std::string& yaml, const Args& a) {
   Scenario s = parseScenario(yaml, a.out);
+  Simulation check(s);  // what the loader leaves to the simulator: an unknown --own-model preset
   if (!s.charts)
     return {};
   ChartOptions co;

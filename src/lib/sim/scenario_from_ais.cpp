@@ -342,16 +342,17 @@ OwnPlace ownPlace(const std::vector<AisLogReport>& log, const AisScenarioOptions
              o.own_speed_kn, o.own_length_m.value_or(120.0)};
   if (o.own_mmsi == 0)
     return p;
-  // Her own frame (round her first report) to interpolate; the answer goes back to latitude/longitude.
-  const AisLogReport* first = nullptr;
+  // Her reports only, in a frame round one of them to interpolate; the answer goes back to
+  // latitude/longitude.
+  std::vector<AisLogReport> hers;
   for (const auto& r : log)
-    if (r.mmsi == o.own_mmsi && (!first || r.time < first->time))
-      first = &r;
-  if (!first)
+    if (r.mmsi == o.own_mmsi)
+      hers.push_back(r);
+  if (hers.empty())
     throw std::invalid_argument("MMSI " + std::to_string(o.own_mmsi) + " does not report in the log");
-  const LocalFrame frame(first->position.lat_deg, first->position.lon_deg);
+  const LocalFrame frame(hers.front().position.lat_deg, hers.front().position.lon_deg);
   std::size_t refused = 0;
-  auto vessels = byVessel(log, frame, knotsToMps(o.max_jump_speed_kn), refused);
+  auto vessels = byVessel(hers, frame, knotsToMps(o.max_jump_speed_kn), refused);
   const Vessel& v = vessels.at(o.own_mmsi);
   const auto at = positionAt(v, o.start, o.max_gap_s);
   if (!at)
