@@ -17,9 +17,9 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 
 def main():
-    if len(sys.argv) != 2:
+    if len(sys.argv) != 2 or sys.argv[1] in ("-h", "--help"):
         print(__doc__)
-        return 2
+        return 0 if len(sys.argv) == 2 else 2
     out = sys.argv[1]
     os.makedirs(os.path.dirname(out) or ".", exist_ok=True)
     exe = shutil.which("catkin_lint")

@@ -43,6 +43,19 @@ asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool loc
   return fc;
 }
 
+// A track as the planners see it (the tracker has checked its values; selectPlannerTargets drops a
+// non-finite one).
+asv::ShipState trackState(const asv_msgs::Target& t) {
+  asv::ShipState s;
+  s.id = t.id;
+  s.position = {t.position.x, t.position.y};
+  s.course = t.course_over_ground;
+  s.speed = t.speed_over_ground;
+  s.heading = t.has_heading ? t.heading : t.course_over_ground;
+  s.length = t.length;
+  return s;
+}
+
 }  // namespace
 
 PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh)
@@ -122,11 +135,18 @@ void PlannerNode::start() {
   risk_sub_ = lockstep_.subscribe("risk", 10, &PlannerNode::riskCallback, this, false);
   targets_sub_ = lockstep_.subscribe("targets", 10, &PlannerNode::targetsCallback, this, false);
   goal_sub_ = nh_.subscribe("goal", 1, &PlannerNode::goalCallback, this);
+  alarms_sub_ = nh_.subscribe("alarms", 50, &PlannerNode::alarmCallback, this);
+  watch_ = asv::InputWatch(params_.watch);
+  for (const ros::Subscriber* s : {&odom_sub_, &risk_sub_, &targets_sub_})
+    watch_.add(s->getTopic());
+  alarm_ = std::make_unique<asv_ros::AlarmReporter>(nh_);
   plan_pub_ = nh_.advertise<asv_msgs::Plan>("plan", 5, true);
   path_pub_ = nh_.advertise<nav_msgs::Path>("path", 5, true);
   cmd_pub_ = nh_.advertise<asv_msgs::CourseSpeedSetpoint>("cmd", 5);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("plan_markers", 2, true);
   lockstep_.every(1.0 / params_.setpoint_rate, [this] { timerCallback(); });
+  if (!lockstep_.enabled())  // a lost input is acted on between set-points too
+    lockstep_.every(asv_ros::kWatchPeriod, [this] { watchJob(); });
   lockstep_.start();
   updater_.setHardwareID(params_.ship);
   updater_.add("planner", this, &PlannerNode::diagnose);
@@ -137,6 +157,8 @@ void PlannerNode::start() {
 void PlannerNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
     own_.reset();
+    watch_.reset();
+    upstream_alarms_.clear();
     first_input_ = -1.0;
     risk_.reset();
     targets_.reset();
@@ -157,6 +179,7 @@ void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
   }
   follower_->updateOwn(*s);
   own_ = *s;
+  watch_.received(odom_sub_.getTopic(), asv_ros::rosNow(), asv_ros::wallNow());
   if (first_input_ < 0.0)
     first_input_ = ros::Time::now().toSec();
 }
@@ -164,10 +187,19 @@ void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
 void PlannerNode::riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg) {
   checkClock();
   risk_ = msg;
+  watch_.received(risk_sub_.getTopic(), asv_ros::rosNow(), asv_ros::wallNow());
 }
 void PlannerNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
   checkClock();
   targets_ = msg;
+  watch_.received(targets_sub_.getTopic(), asv_ros::rosNow(), asv_ros::wallNow());
+}
+
+void PlannerNode::alarmCallback(const asv_msgs::Alarm::ConstPtr& msg) {
+  const std::string& src = msg->source;
+  const std::string base = src.substr(src.rfind('/') + 1);
+  if (std::find(params_.upstream_nodes.begin(), params_.upstream_nodes.end(), base) != params_.upstream_nodes.end())
+    upstream_alarms_[src] = msg;
 }
 
 void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) {
@@ -193,6 +225,26 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
   if (!targets_ || !fresh(targets_->header.stamp))
     return {};
   const bool risk_fresh = risk_ && fresh(risk_->header.stamp);
+  std::vector<asv::ShipState> tracks;
+  for (const auto& t : targets_->targets)
+    tracks.push_back(trackState(t));
+  return withRisk(tracks, risk_fresh);
+}
+
+std::vector<asv::PlannerTarget> PlannerNode::lastPicture(const ros::Time& now) const {
+  if (!targets_)
+    return {};
+  std::vector<asv::ShipState> tracks;
+  for (const auto& t : targets_->targets)
+    tracks.push_back(trackState(t));
+  // Every last track counts, assessed or not: in degraded operation a ship is a danger until shown not.
+  return asv::PlanFollower::deadReckon(asv::selectPlannerTargets(params_.ship, tracks, {}, false),
+                                       targets_->header.stamp.toSec(), now.toSec());
+}
+
+std::vector<asv::PlannerTarget> PlannerNode::withRisk(const std::vector<asv::ShipState>& tracks,
+                                                      bool risk_fresh) const {
+  const ros::Time now = ros::Time::now();
   std::map<std::string, asv::PlannerTarget> assessed;
   if (risk_fresh)
     for (const auto& r : risk_->targets) {
@@ -205,17 +257,6 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
       pt.tcpa = r.tcpa;
       pt.dcpa = r.dcpa;
     }
-  std::vector<asv::ShipState> tracks;
-  for (const auto& t : targets_->targets) {
-    asv::ShipState s;
-    s.id = t.id;
-    s.position = {t.position.x, t.position.y};
-    s.course = t.course_over_ground;
-    s.speed = t.speed_over_ground;
-    s.heading = t.has_heading ? t.heading : t.course_over_ground;
-    s.length = t.length;
-    tracks.push_back(s);
-  }
   const bool risk_alive =
       !asv::riskBlindPlanning(risk_fresh, now.toSec(), first_input_, params_.stale_after);
   return asv::selectPlannerTargets(params_.ship, tracks, assessed, risk_alive);
@@ -250,6 +291,7 @@ void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerT
   plan.compute_time = last_compute_;
   const asv::Plan& in_force = follower_->acceptPlan(std::move(plan), now, targets, why);
   plan_stamp_ = ros::Time::now();
+  watch_.busy(plan_stamp_.toSec(), asv_ros::wallNow());  // what came meanwhile is still queued
   last_reason_ = why;
   ROS_INFO("planner_node: %s plan (%s) in %.1f ms: course %.1f deg, speed %.1f kn, %zu waypoints: %s",
            asv::toString(in_force.status), why.c_str(), last_compute_ * 1e3,
@@ -322,14 +364,69 @@ void PlannerNode::timerCallback() {
   checkClock();
   if (!own_) {
     ROS_WARN_THROTTLE(10.0, "planner_node: waiting for odometry on %s", odom_sub_.getTopic().c_str());
+    if (!ros::Time::now().isZero())
+      alarm_->update(lostInputs(), "no set-point: own position unknown");
     return;
   }
-  std::string why;
-  const std::vector<asv::PlannerTarget> targets = targetsNow();
-  if (follower_->replanNeeded(ros::Time::now().toSec(), targets, why))
-    replan(why, targets);
+  const std::vector<asv::StaleInput> lost = lostInputs();
+  if (!lost.empty()) {
+    degrade(lost);
+  } else {
+    alarm_->update({}, "");
+    follower_->recover();
+    std::string why;
+    const std::vector<asv::PlannerTarget> targets = targetsNow();
+    if (follower_->replanNeeded(ros::Time::now().toSec(), targets, why))
+      replan(why, targets);
+  }
   publishSetpoint();
   updater_.update();
+}
+
+void PlannerNode::watchJob() {
+  checkClock();
+  const std::vector<asv::StaleInput> lost = lostInputs();
+  if (!own_ || lost.empty())
+    return;  // the set-point job does the rest (waiting for odometry, recovery)
+  const uint64_t replans = follower_->replans();
+  degrade(lost);
+  if (follower_->replans() != replans)
+    publishSetpoint();
+}
+
+std::vector<asv::StaleInput> PlannerNode::lostInputs() {
+  const ros::Time now = ros::Time::now();
+  if (lockstep_.enabled() || now.isZero())
+    return {};  // in lockstep a node that stops stops the simulation (lockstep_timeout, ERROR)
+  std::vector<asv::StaleInput> lost = watch_.stale(now.toSec(), asv_ros::wallNow());
+  if (risk_ && !risk_->data_ok && !risk_->data_fault.empty())
+    lost.push_back({risk_sub_.getTopic(), risk_sub_.getTopic() + " says data not ok: " + risk_->data_fault});
+  for (const auto& [source, a] : upstream_alarms_)
+    if (a->level == asv_msgs::Alarm::ERROR) {
+      std::string why = source + " alarm:";
+      for (const std::string& c : a->causes)
+        why += " " + c;
+      lost.push_back({source, why});
+    }
+  return lost;
+}
+
+void PlannerNode::degrade(const std::vector<asv::StaleInput>& lost) {
+  const ros::Time now = ros::Time::now();
+  std::string cause;
+  for (const asv::StaleInput& l : lost)
+    cause += (cause.empty() ? "" : "; ") + l.text;
+  const uint64_t replans = follower_->replans();
+  const asv::Plan& plan = follower_->degrade(now.toSec(), lastPicture(now), cause);
+  alarm_->update(lost, plan.status == asv::PlanStatus::Ok
+                           ? "degraded: plan in force kept while it passes the last known targets"
+                           : plan.message);
+  if (follower_->replans() == replans)
+    return;
+  plan_stamp_ = now;
+  last_reason_ = "degraded";
+  ROS_WARN("planner_node: %s", plan.message.c_str());
+  publishPlan();
 }
 
 void PlannerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
@@ -348,6 +445,7 @@ void PlannerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "plugin overran its time budget");
   else
     stat.summary(diagnostic_msgs::DiagnosticStatus::OK, follower_->havePlan() ? "planning" : "waiting");
+  alarm_->diagnose(stat);
 }
 
 }  // namespace asv_planning

@@ -7,6 +7,7 @@
 #include <asv_core/common/units.h>
 #include <asv_ros/conversions.h>
 
+#include "asv_risk/conversions.h"
 #include "asv_risk/params.h"
 #include "asv_risk/target_quality.h"
 
@@ -117,6 +118,9 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   // Each array holds what was reported since the last: nothing new, nothing to publish.
   lockstep_.every(
       1.0 / params_.publish_rate, [this] { publish(); }, true);
+  // Free-running only: in lockstep a node that stops stops the simulation (lockstep_timeout).
+  if (!lockstep_.enabled())
+    lockstep_.every(params_.heartbeat_period, [this] { heartbeat(); });
   updater_.setHardwareID("radar");
   updater_.add("arpa input", this, &ArpaNode::diagnose);
   diag_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
@@ -233,7 +237,13 @@ void ArpaNode::publish() {
   if (arr.targets.empty())
     return;
   lockstep_.publish(targets_pub_, arr);
+  last_publish_ = now;
   ++published_;
+}
+
+void ArpaNode::heartbeat() {
+  if (auto arr = heartbeatArray(ros::Time::now(), last_publish_, params_.heartbeat_period, params_.frame_id))
+    lockstep_.publish(targets_pub_, *arr);
 }
 
 void ArpaNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {

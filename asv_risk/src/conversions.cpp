@@ -102,6 +102,18 @@ asv_msgs::TargetRisk toMsg(const asv::TargetRisk& r, uint32_t mmsi) {
   return m;
 }
 
+std::optional<asv_msgs::TargetArray> heartbeatArray(const ros::Time& now, ros::Time& last, double period,
+                                                    const std::string& frame_id) {
+  // 0.99: a timer due every `period` may fire a hair early.
+  if (now.isZero() || (now >= last && (now - last).toSec() < 0.99 * period))
+    return std::nullopt;
+  asv_msgs::TargetArray arr;
+  arr.header.stamp = now;
+  arr.header.frame_id = frame_id;
+  last = now;
+  return arr;
+}
+
 }  // namespace asv_risk
 
 // The message constants mirror the core enumerations: catch any drift at compile time.

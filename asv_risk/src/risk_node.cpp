@@ -41,6 +41,11 @@ RiskNode::RiskNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   // Lockstep: the odometry of the step first, then the tracks it is assessed with.
   odom_sub_ = lockstep_.subscribe("odom", 20, &RiskNode::odomCallback, this, false);
   targets_sub_ = lockstep_.subscribe("targets", 20, &RiskNode::targetsCallback, this);
+  watch_.add(targets_sub_.getTopic());
+  watch_.add(odom_sub_.getTopic());
+  // Free-running only: in lockstep a node that stops stops the simulation (lockstep_timeout, ERROR).
+  if (!lockstep_.enabled())
+    lockstep_.every(asv_ros::kWatchPeriod, [this] { watchInputs(); });
 
   updater_.setHardwareID(params_.own_ship);
   risk_diag_ = std::make_unique<diagnostic_updater::TopicDiagnostic>(
@@ -81,6 +86,7 @@ void RiskNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
     own_.reset();
     assessor_.reset();
+    watch_.reset();
     return std::string("own ship and compliance histories reset");
   });
 }
@@ -107,6 +113,7 @@ void RiskNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
     return;
   }
   own_ = s;
+  watch_.received(odom_sub_.getTopic(), asv_ros::rosNow(), asv_ros::wallNow());
   own_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
 }
 
@@ -114,6 +121,7 @@ void RiskNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
   checkClock();
   const ros::Time now = ros::Time::now();
   targets_seen_ += msg->targets.size();
+  watch_.received(targets_sub_.getTopic(), now.toSec(), asv_ros::wallNow());
   if (!own_) {
     ROS_WARN_THROTTLE(10.0, "risk_node: no own-ship odometry yet on '%s'; targets not assessed",
                       odom_sub_.getTopic().c_str());
@@ -180,11 +188,41 @@ void RiskNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
     ra.max_cri = std::max(ra.max_cri, risks[i].cri.cri);
     ra.max_risk_level = std::max(ra.max_risk_level, ra.targets.back().risk_level);
   }
+  fillDataState(ra, now.toSec());
+  last_ = ra;
   lockstep_.publish(risk_pub_, ra);
   risk_diag_->tick(ra.header.stamp);
   ++assessments_;
   if (params_.publish_markers)
     marker_pub_.publish(makeMarkers(ra));
+}
+
+void RiskNode::fillDataState(asv_msgs::RiskAssessment& ra, double now) {
+  const std::vector<asv::StaleInput> stale =
+      lockstep_.enabled() ? std::vector<asv::StaleInput>() : watch_.stale(now, asv_ros::wallNow());
+  ra.data_ok = stale.empty();
+  ra.data_fault.clear();
+  for (const asv::StaleInput& s : stale)
+    ra.data_fault += (ra.data_fault.empty() ? "" : "; ") + s.text;
+  ra.targets_age = watch_.everReceived(targets_sub_.getTopic()) ? watch_.age(targets_sub_.getTopic(), now) : -1.0;
+  ra.odom_age = watch_.everReceived(odom_sub_.getTopic()) ? watch_.age(odom_sub_.getTopic(), now) : -1.0;
+}
+
+void RiskNode::watchInputs() {
+  checkClock();
+  const ros::Time now = ros::Time::now();
+  if (now.isZero())
+    return;  // no clock yet (a simulation not started)
+  const std::vector<asv::StaleInput> stale = watch_.stale(now.toSec(), asv_ros::wallNow());
+  alarm_.update(stale, "risk sent with data_ok false and the last assessment");
+  if (stale.empty())
+    return;
+  asv_msgs::RiskAssessment ra = last_;
+  ra.header.stamp = now;
+  ra.header.frame_id = params_.frame_id;
+  ra.own_ship = params_.own_ship;
+  fillDataState(ra, now.toSec());
+  lockstep_.publish(risk_pub_, ra);
 }
 
 visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssessment& ra) const {
@@ -253,6 +291,7 @@ void RiskNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no own-ship odometry");
   else
     stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "inputs ok");
+  alarm_.diagnose(stat);
   rejected_at_last_diag_ = total;
 }
 

@@ -68,8 +68,20 @@ TrackReject targetToReport(const asv_msgs::Target& t, const ros::Time& array_sta
 TrackerNode::TrackerNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh), pnh_(pnh), params_(loadTrackerParams(pnh)), tracker_(params_.tracker) {
   targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("targets", 10);
-  ais_sub_ = lockstep_.subscribe("ais/targets", 50, &TrackerNode::targetsCallback, this);
-  arpa_sub_ = lockstep_.subscribe("arpa/targets", 50, &TrackerNode::targetsCallback, this);
+  // Each input counts for the watch (an empty array is the ingestion node's heartbeat).
+  auto watched = [this](const ros::Subscriber* sub) {
+    return [this, sub](const asv_msgs::TargetArray::ConstPtr& msg) {
+      watch_.received(sub->getTopic(), asv_ros::rosNow(), asv_ros::wallNow());
+      targetsCallback(msg);
+    };
+  };
+  ais_sub_ = lockstep_.subscribe<asv_msgs::TargetArray>("ais/targets", 50, watched(&ais_sub_));
+  arpa_sub_ = lockstep_.subscribe<asv_msgs::TargetArray>("arpa/targets", 50, watched(&arpa_sub_));
+  watch_.add(ais_sub_.getTopic());
+  watch_.add(arpa_sub_.getTopic());
+  // Free-running only: in lockstep a node that stops stops the simulation (lockstep_timeout, ERROR).
+  if (!lockstep_.enabled())
+    lockstep_.every(asv_ros::kWatchPeriod, [this] { watchInputs(ros::Time::now()); });
   lockstep_.every(1.0 / params_.publish_rate, [this] { publish(); });
   lockstep_.start();
   updater_.setHardwareID("tracker");
@@ -177,10 +189,16 @@ bool TrackerNode::checkClock(const ros::Time& now) {
   return asv_ros::resetOnClockJump(clock_, updater_, now, [this] {
     std::string what = std::to_string(tracker_.tracks().size()) + " tracks dropped";
     tracker_.clear();
+    watch_.reset();
     ais_meta_.clear();
     arpa_meta_.clear();
     return what;
   });
+}
+
+void TrackerNode::watchInputs(const ros::Time& now) {
+  if (!now.isZero())
+    alarm_.update(watch_.stale(now.toSec(), asv_ros::wallNow()), "tracks coast on their last reports");
 }
 
 void TrackerNode::publish() {
@@ -240,6 +258,7 @@ void TrackerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   diag_time_ = now;
   diag_reports_ = c.reports;
   diag_rejected_ = rejected;
+  alarm_.diagnose(stat);
 }
 
 }  // namespace asv_risk

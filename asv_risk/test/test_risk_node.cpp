@@ -6,12 +6,16 @@
 //  - ts2 head-on 15 km ahead heading south at 6 m/s at t = 0: TCPA = 15000 / 12 = 1250 s > t_max
 //    (1200 s), so risk 0, encounter head-on;
 //  - three bad targets every time (NaN position, a duplicated id, a stamp 60 s in the future) are
-//    rejected and counted, and the valid ones still come through.
+//    rejected and counted, and the valid ones still come through;
+//  - the targets stop coming (the tracker down) while the odometry goes on: after watch/input_timeout
+//    (1.5 s) plus one check (0.25 s), an ERROR alarm names /targets and `risk` goes on with data_ok false
+//    and the last picture, never an empty, clear sea; the targets back, the alarm clears.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
+#include <asv_msgs/Alarm.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
 #include <nav_msgs/Odometry.h>
@@ -47,8 +51,7 @@ protected:
     return t;
   }
 
-  // Publishes the situation at scripted time t and waits for the assessment of exactly this update.
-  asv_msgs::RiskAssessment::ConstPtr step(double t) {
+  void publishOdom(double t) {
     nav_msgs::Odometry o;
     o.header.stamp = ros::Time::now();
     o.header.frame_id = "map";
@@ -58,6 +61,11 @@ protected:
     o.pose.pose.orientation.w = std::cos(M_PI / 4);
     o.twist.twist.linear.x = 6.0;
     odom_pub_.publish(o);
+  }
+
+  // Publishes the situation at scripted time t and waits for the assessment of exactly this update.
+  asv_msgs::RiskAssessment::ConstPtr step(double t) {
+    publishOdom(t);
     ros::WallDuration(0.1).sleep();
 
     asv_msgs::TargetArray arr;
@@ -154,6 +162,57 @@ TEST_F(RiskNodeTest, NonCompliantGiveWayTargetIsFlaggedWhenRiskBecomesUrgent) {
   for (const auto& t : ra->targets)
     for (double v : {t.tcpa, t.dcpa, t.cri, t.range, t.bearing, t.safe_distance_d1, t.safe_distance_d2})
       EXPECT_TRUE(std::isfinite(v));
+}
+
+TEST_F(RiskNodeTest, AStoppedTrackerIsAnAlarmAndNeverAClearSea) {
+  std::vector<asv_msgs::Alarm::ConstPtr> alarms;
+  std::vector<asv_msgs::RiskAssessment::ConstPtr> risks;
+  ros::Subscriber a = nh_.subscribe<asv_msgs::Alarm>(
+      "alarms", 50, [&](const asv_msgs::Alarm::ConstPtr& m) { alarms.push_back(m); });
+  ros::Subscriber r = nh_.subscribe<asv_msgs::RiskAssessment>(
+      "risk", 50, [&](const asv_msgs::RiskAssessment::ConstPtr& m) { risks.push_back(m); });
+  auto ra = step(0.0);
+  ASSERT_TRUE(ra);
+  EXPECT_TRUE(ra->data_ok) << ra->data_fault;
+  EXPECT_GE(ra->targets_age, 0.0);
+  EXPECT_LT(ra->targets_age, 0.5);
+  EXPECT_GE(ra->odom_age, 0.0);
+  EXPECT_LT(ra->odom_age, 1.0);
+  // 3 s without targets, the own ship still reporting.
+  risks.clear();
+  const ros::WallTime stopped = ros::WallTime::now();
+  while (ros::WallTime::now() - stopped < ros::WallDuration(3.0)) {
+    publishOdom(0.0);
+    ros::WallDuration(0.1).sleep();
+    ros::spinOnce();
+  }
+  const asv_msgs::RiskAssessment* flagged = nullptr;
+  for (const auto& m : risks)
+    if (!m->data_ok && !flagged)
+      flagged = m.get();
+  ASSERT_TRUE(flagged) << "no risk with data_ok false in 3 s without targets";
+  EXPECT_NE(flagged->data_fault.find("/targets: none for"), std::string::npos) << flagged->data_fault;
+  EXPECT_GT(flagged->targets_age, 1.5);
+  EXPECT_LT(flagged->targets_age, 2.5);
+  EXPECT_EQ(flagged->targets.size(), 2u);  // the last picture (ts1, ts2), not an empty sea
+  const asv_msgs::Alarm* raised = nullptr;
+  for (const auto& m : alarms)
+    if (m->level == asv_msgs::Alarm::ERROR && !raised)
+      raised = m.get();
+  ASSERT_TRUE(raised) << "no alarm";
+  EXPECT_EQ(raised->source, "/risk_node");
+  ASSERT_EQ(raised->inputs.size(), 1u);
+  EXPECT_EQ(raised->inputs[0], "/targets");
+  // The targets back: a fresh assessment, and the alarm clears.
+  ra = step(1.0);
+  ASSERT_TRUE(ra);
+  EXPECT_TRUE(ra->data_ok) << ra->data_fault;
+  const ros::WallTime back = ros::WallTime::now();
+  while (ros::WallTime::now() - back < ros::WallDuration(1.0) && alarms.back()->level != asv_msgs::Alarm::OK) {
+    ros::WallDuration(0.05).sleep();
+    ros::spinOnce();
+  }
+  EXPECT_EQ(alarms.back()->level, asv_msgs::Alarm::OK);
 }
 
 }  // namespace

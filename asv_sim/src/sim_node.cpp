@@ -66,10 +66,13 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("sim/markers", 2);
   land_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("sim/land", 1, true);
   publishLand();
+  cmd_watch_ = asv::InputWatch(params_.watch);
+  alarm_ = std::make_unique<asv_ros::AlarmReporter>(nh_);
   for (const auto& v : sim_->vessels()) {
     odom_pubs_.push_back(nh_.advertise<nav_msgs::Odometry>(v.name + "/odom", 50));
     if (v.own || v.behaviour == asv::Behaviour::Planner) {
       const std::string ship = v.name, topic = nh_.resolveName(ship + "/cmd");
+      cmd_watch_.add(topic);
       cmd_subs_.push_back(nh_.subscribe<asv_msgs::CourseSpeedSetpoint>(
           topic, 10,
           [this, ship, topic](const asv_msgs::CourseSpeedSetpoint::ConstPtr& m) {
@@ -114,6 +117,7 @@ SimNode::~SimNode() {
 void SimNode::cmdCallback(const std::string& ship, const std::string& topic,
                           const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg) {
   ++cmds_received_[topic];
+  cmd_watch_.received(topic, ros::Time::now().toSec(), asv_ros::wallNow());
   if (sim_->setSetpoint(ship, msg->course, msg->speed)) {
     ++cmds_ok_;
   } else {
@@ -121,6 +125,14 @@ void SimNode::cmdCallback(const std::string& ship, const std::string& topic,
     ROS_WARN_THROTTLE(5.0, "sim_node: rejected set-point for '%s' (course %f rad, speed %f m/s)",
                       ship.c_str(), msg->course, msg->speed);
   }
+}
+
+void SimNode::watchCmds() {
+  std::vector<asv::StaleInput> lost;
+  for (const asv::StaleInput& s : cmd_watch_.stale(ros::Time::now().toSec(), asv_ros::wallNow()))
+    if (cmd_watch_.everReceived(s.name))
+      lost.push_back(s);
+  alarm_->update(lost, "the ship holds her last set-point");
 }
 
 void SimNode::publishNmea(const std::vector<std::string>& lines, const ros::Time& stamp, const char* frame) {
@@ -376,6 +388,7 @@ void SimNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "slower than the requested real-time factor");
   else
     stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
+  alarm_->diagnose(stat);
 }
 
 void SimNode::publishClock() {
@@ -439,6 +452,7 @@ int SimNode::runFreely() {
     if (publishNewEvents())
       break;
     ros::spinOnce();
+    watchCmds();
     const double wall = (ros::WallTime::now() - wall_start).toSec();
     achieved_rtf_ = wall > 0.0 ? sim_->time() / wall : 0.0;
     if (params_.rate > 0.0) {

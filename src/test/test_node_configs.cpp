@@ -56,8 +56,14 @@ TEST(NodeConfigs, PlannerNodeYamlIsTheCodesKeySetAndDefaults) {
   EXPECT_DOUBLE_EQ(asv::OwnShipLimits{}.turn_rate, 0.0175);
   EXPECT_DOUBLE_EQ(asv::PlanFollowerConfig{}.limits.turn_rate, 0.0175);
   EXPECT_DOUBLE_EQ(c.follower.replan_period, asv::PlanFollowerConfig{}.replan_period);
-  EXPECT_DOUBLE_EQ(c.stale_after, asv::PlannerNodeConfig{}.stale_after);
+  const asv::PlannerNodeConfig defaults;
+  EXPECT_DOUBLE_EQ(c.stale_after, defaults.stale_after);
   EXPECT_FALSE(c.has_goal);  // goal_x/goal_y are commented out
+  // The inputs' watch: the file's values are the code's.
+  EXPECT_DOUBLE_EQ(c.watch.input_timeout, defaults.watch.input_timeout);
+  EXPECT_DOUBLE_EQ(c.watch.wall_floor, defaults.watch.wall_floor);
+  EXPECT_EQ(c.upstream_nodes, defaults.upstream_nodes);
+  EXPECT_DOUBLE_EQ(c.follower.degraded_plan_hold, asv::PlanFollowerConfig{}.degraded_plan_hold);
 }
 
 TEST(NodeConfigs, PlannerNodeGoalNeedsBothCoordinates) {

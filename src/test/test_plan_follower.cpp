@@ -390,3 +390,77 @@ TEST(LandRoute, ThroughAHarbourEntranceNotRoundTheBreakwater) {
   EXPECT_LT(length, 9600.0);  // the straight 9513 m and a little, not a 5 km detour
   EXPECT_GE(asv::trackObstacleDistance(track, port), 185.2);
 }
+
+namespace {
+
+asv::Plan northPlan() {
+  asv::Plan p;
+  p.status = asv::PlanStatus::Ok;
+  p.course_setpoint = 0.0;
+  p.speed_setpoint = 6.0;
+  p.waypoints = {{{0.0, 0.0}, 0.0, 0.0, 6.0}, {{0.0, 20000.0}, 3333.0, 0.0, 6.0}};
+  return p;
+}
+
+asv::PlannerTarget westbound(const Eigen::Vector2d& at) {
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.state.position = at;
+  t.state.course = t.state.heading = 1.5 * asv::kPi;  // west
+  t.state.speed = 6.0;
+  return t;
+}
+
+}  // namespace
+
+TEST(PlanFollower, DeadReckonMovesThePictureOnAtEachCourseAndSpeed) {
+  asv::PlannerTarget t = westbound({100.0, 50.0});
+  const auto moved = asv::PlanFollower::deadReckon({t}, 10.0, 14.0);
+  EXPECT_NEAR(moved[0].state.position.x(), 100.0 - 6.0 * 4.0, 1e-9);  // 4 s west at 6 m/s
+  EXPECT_NEAR(moved[0].state.position.y(), 50.0, 1e-9);
+}
+
+TEST(PlanFollower, DegradedKeepsASafePlanForAMinuteThenHoldsCourseSlowly) {
+  asv::PlanFollower f = follower(false);
+  f.acceptPlan(northPlan(), 0.0, {}, "test");
+  // The last picture: a ship 20 km east, westbound: she crosses x = 0 after 3333 s, beyond the
+  // 1200 s horizon: the plan still passes her.
+  const std::vector<asv::PlannerTarget> far{westbound({20000.0, 5000.0})};
+  EXPECT_EQ(f.degrade(10.0, far, "risk: none for 2.0 s").status, asv::PlanStatus::Ok);
+  EXPECT_TRUE(f.degraded());
+  EXPECT_EQ(f.degrade(70.0, far, "risk: none for 62.0 s").status, asv::PlanStatus::Ok);  // 60 s held
+  const asv::Plan& held = f.degrade(70.5, far, "risk: none for 62.5 s");
+  EXPECT_EQ(held.status, asv::PlanStatus::Fallback);
+  EXPECT_EQ(held.message.rfind("degraded: ", 0), 0u) << held.message;
+  EXPECT_NE(held.message.find("risk: none for 62.5 s"), std::string::npos) << held.message;
+  EXPECT_DOUBLE_EQ(held.course_setpoint, 0.0);  // the course she had
+  EXPECT_DOUBLE_EQ(held.speed_setpoint, 3.0);   // 0.5 x 6 m/s
+  // The course held is the one of the loss, not wherever she drifts afterwards.
+  asv::ShipState drifted = own();
+  drifted.course = 0.3;
+  f.updateOwn(drifted);
+  EXPECT_DOUBLE_EQ(f.degrade(80.0, far, "x").course_setpoint, 0.0);
+}
+
+TEST(PlanFollower, DegradedDropsAPlanThatNoLongerPassesTheLastPicture) {
+  asv::PlanFollower f = follower(false);
+  f.acceptPlan(northPlan(), 0.0, {}, "test");
+  // By hand: own ship north at 6 m/s from (0, 0), target west at 6 m/s from (5000, 5000): both reach
+  // (0, 5000) at t = 833 s, a collision course: the plan is not kept.
+  const asv::Plan& p = f.degrade(1.0, {westbound({5000.0, 5000.0})}, "tracks: none for 1.6 s");
+  EXPECT_EQ(p.status, asv::PlanStatus::Fallback);
+  EXPECT_DOUBLE_EQ(p.speed_setpoint, 3.0);
+  // The picture comes back: a plan at once, whatever min_replan_interval says.
+  f.recover();
+  EXPECT_FALSE(f.degraded());
+  std::string why;
+  EXPECT_TRUE(f.replanNeeded(1.5, {}, why));
+  EXPECT_EQ(why, "picture back after degraded operation");
+  EXPECT_THROW(
+      [] {
+        asv::PlanFollowerConfig c;
+        c.degraded_plan_hold = -1.0;
+        c.validate();
+      }(),
+      std::invalid_argument);
+}

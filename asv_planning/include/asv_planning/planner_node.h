@@ -1,9 +1,11 @@
 // planner_node: hosts one planner plugin for one ship.
 //
 // Subscribes: odom (nav_msgs/Odometry, own ship), risk (asv_msgs/RiskAssessment), targets
-//   (asv_msgs/TargetArray), goal (geometry_msgs/PoseStamped, optional: replaces the configured goal)
+//   (asv_msgs/TargetArray), goal (geometry_msgs/PoseStamped, optional: replaces the configured goal),
+//   alarms (asv_msgs/Alarm: the upstream nodes' alarms)
 // Publishes: plan (asv_msgs/Plan), path (nav_msgs/Path), cmd (asv_msgs/CourseSpeedSetpoint),
-//   plan_markers (visualization_msgs/MarkerArray), /diagnostics
+//   plan_markers (visualization_msgs/MarkerArray), alarms (asv_msgs/Alarm, latched: its inputs lost and
+//   the degraded action), /diagnostics
 // Parameters: config/planner_node.yaml; the plugin's own under ~<planner>/ (config/<planner>.yaml).
 #pragma once
 
@@ -16,8 +18,10 @@
 #include <asv_core/planning/plan_follower.h>
 #include <asv_core/planning/planner_node_config.h>
 #include <asv_core/planning/planning.h>
+#include <asv_msgs/Alarm.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/alarm.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -42,7 +46,16 @@ private:
   asv::ParamMap applyScenario();
   void start();
   void timerCallback();
+  void watchJob();  // free-running, every kWatchPeriod: degraded operation as soon as an input is lost
   std::vector<asv::PlannerTarget> targetsNow() const;
+  // The last tracks with their last risk picture, however old, dead-reckoned to now (degraded operation).
+  std::vector<asv::PlannerTarget> lastPicture(const ros::Time& now) const;
+  std::vector<asv::PlannerTarget> withRisk(const std::vector<asv::ShipState>& tracks, bool risk_fresh) const;
+  // What the picture lacks now: stale inputs, risk with data_ok false, upstream ERROR alarms.
+  std::vector<asv::StaleInput> lostInputs();
+  void alarmCallback(const asv_msgs::Alarm::ConstPtr& msg);
+  // Degraded operation while `lost` is not empty (PlanFollower::degrade), else back to planning.
+  void degrade(const std::vector<asv::StaleInput>& lost);
   void replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets);
   void publishPlan();
   void publishSetpoint();
@@ -55,10 +68,14 @@ private:
   PluginLoader loader_;
   pluginlib::UniquePtr<PlannerPlugin> plugin_;
   std::vector<asv::StaticObstacle> obstacles_;
-  ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_;
+  ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_;
   ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_;
   diagnostic_updater::Updater updater_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kPlanning};
+
+  asv::InputWatch watch_;
+  std::unique_ptr<asv_ros::AlarmReporter> alarm_;
+  std::map<std::string, asv_msgs::Alarm::ConstPtr> upstream_alarms_;  // by source node
 
   std::optional<asv::ShipState> own_;
   double first_input_ = -1.0;  // [s] ROS time of the first odometry (-1: none yet)

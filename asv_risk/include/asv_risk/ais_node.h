@@ -3,8 +3,8 @@
 // Subscribes: nmea_in (asv_msgs/NmeaSentence) when input/type is topic
 // Publishes:  nmea (asv_msgs/NmeaSentence, every line read from a device), ais/targets
 //             (asv_msgs/TargetArray in the local ENU frame of origin_lat_deg/origin_lon_deg: each array
-//             holds the ships reported since the previous one, static and voyage data merged per MMSI),
-//             /diagnostics
+//             holds the ships reported since the previous one, static and voyage data merged per MMSI;
+//             an empty one every heartbeat_period when none was), /diagnostics
 // Parameters: see config/ais_node.yaml (every key documented there).
 #pragma once
 
@@ -49,6 +49,8 @@ private:
   void reject(AisReject why, std::uint32_t mmsi);
   void mergeStatic(asv_msgs::Target& t) const;
   void publish();
+  // An empty array when nothing was published for heartbeat_period (the tracker's sign of life).
+  void heartbeat();
   // Forgets every ship and pending fragment when the clock has gone backwards (a looping bag).
   void checkClock();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
@@ -68,6 +70,7 @@ private:
   asv::ClockJumpDetector clock_;
   std::unique_ptr<NmeaInput> input_;  // last: its thread starts once everything else exists
 
+  ros::Time last_publish_;
   std::uint64_t rejected_[static_cast<std::size_t>(AisReject::kCount)] = {};
   std::uint64_t reports_ = 0, own_ship_ = 0, not_ships_ = 0, other_sentences_ = 0;
   std::uint64_t published_ = 0;

@@ -9,7 +9,8 @@
 //
 // Subscribes: odom (nav_msgs/Odometry), nmea_in (asv_msgs/NmeaSentence) when input/type is topic
 // Publishes:  nmea (asv_msgs/NmeaSentence, every line read from a device), arpa/targets
-//             (asv_msgs/TargetArray: the radar targets reported since the previous array), /diagnostics
+//             (asv_msgs/TargetArray: the radar targets reported since the previous array; an empty one
+//             every heartbeat_period when none was), /diagnostics
 // Parameters: see config/arpa_node.yaml (every key documented there).
 #pragma once
 
@@ -66,6 +67,8 @@ private:
   void reject(ArpaReject why, int number);
   void parseError(asv::arpa::Error e, const char* type);
   void publish();
+  // An empty array when nothing was published for heartbeat_period (the tracker's sign of life).
+  void heartbeat();
   // Forgets every radar target and the own ship when the clock has gone backwards (a looping bag).
   void checkClock();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
@@ -81,6 +84,7 @@ private:
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kIngestion};  // before input_, which subscribes through it
   diagnostic_updater::Updater updater_;
 
+  ros::Time last_publish_;
   std::uint64_t rejected_[static_cast<std::size_t>(ArpaReject::kCount)] = {};
   std::uint64_t parse_errors_[static_cast<std::size_t>(asv::arpa::Error::kCount)] = {};
   std::uint64_t ttm_ = 0, tll_ = 0, osd_ = 0, other_ = 0, published_ = 0;

@@ -2,10 +2,12 @@
 // out of the engine. No ROS node handle here: unit-testable without a master.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <asv_core/risk/risk_assessment.h>
 #include <asv_msgs/Target.h>
+#include <asv_msgs/TargetArray.h>
 #include <asv_msgs/TargetRisk.h>
 #include <nav_msgs/Odometry.h>
 
@@ -24,6 +26,11 @@ Reject targetToShipState(const asv_msgs::Target& msg, asv::ShipState& out);
 // Converts an odometry message (pose in the working frame, twist in child_frame_id as REP 105 says)
 // into the own ship's state over ground.
 Reject odometryToShipState(const nav_msgs::Odometry& msg, const std::string& name, asv::ShipState& out);
+
+// The ingestion nodes' sign of life: an empty array stamped now when nothing went out since `last` for
+// `period` (or the clock went back); `last` then becomes now. None while the clock is not running.
+std::optional<asv_msgs::TargetArray> heartbeatArray(const ros::Time& now, ros::Time& last, double period,
+                                                    const std::string& frame_id);
 
 // Fills a TargetRisk message from the core result.
 asv_msgs::TargetRisk toMsg(const asv::TargetRisk& r, uint32_t mmsi);

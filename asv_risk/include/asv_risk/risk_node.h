@@ -2,7 +2,8 @@
 //
 // Subscribes: odom (nav_msgs/Odometry, own ship), targets (asv_msgs/TargetArray)
 // Publishes:  risk (asv_msgs/RiskAssessment, on every target update), risk_markers
-//             (visualization_msgs/MarkerArray), /diagnostics
+//             (visualization_msgs/MarkerArray), alarms (asv_msgs/Alarm, latched: targets or odometry
+//             stale), /diagnostics
 // Parameters: see config/risk_node.yaml (every key documented there).
 #pragma once
 
@@ -15,6 +16,7 @@
 #include <asv_core/risk/risk_node_config.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/alarm.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <diagnostic_updater/publisher.h>
@@ -49,6 +51,10 @@ private:
   bool transformToWorking(const std::string& frame, const ros::Time& stamp, tf2::Transform& out);
   visualization_msgs::MarkerArray makeMarkers(const asv_msgs::RiskAssessment& ra) const;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
+  // The inputs' watch (every kWatchPeriod): the alarm, and while an input is stale the last assessment again
+  // with data_ok false.
+  void watchInputs();
+  void fillDataState(asv_msgs::RiskAssessment& ra, double now);
 
   ros::NodeHandle nh_, pnh_;
   asv::RiskNodeConfig params_;
@@ -62,6 +68,9 @@ private:
   std::unique_ptr<diagnostic_updater::TopicDiagnostic> risk_diag_;
   ros::Timer diag_timer_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kRisk};
+  asv::InputWatch watch_{params_.watch};
+  asv_ros::AlarmReporter alarm_{nh_};
+  asv_msgs::RiskAssessment last_;  // the last assessment made, sent again while the data is stale
 
   asv::ClockJumpDetector clock_;
   std::optional<asv::ShipState> own_;

@@ -3,7 +3,8 @@
 // publishes them at a fixed rate with their age, source (AIS/ARPA/FUSED) and quality.
 //
 // Subscribes: ais/targets, arpa/targets (asv_msgs/TargetArray in frame_id)
-// Publishes:  targets (asv_msgs/TargetArray, every live track at publish_rate), /diagnostics
+// Publishes:  targets (asv_msgs/TargetArray, every live track at publish_rate), alarms (asv_msgs/Alarm,
+//             latched: an input silent), /diagnostics
 // Parameters: see config/tracker.yaml (every key documented there).
 #pragma once
 
@@ -15,6 +16,7 @@
 #include <asv_core/tracking/tracker.h>
 #include <asv_core/tracking/tracker_node_config.h>
 #include <asv_msgs/TargetArray.h>
+#include <asv_ros/alarm.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
@@ -41,6 +43,8 @@ private:
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
   void reject(TrackReject why, const std::string& id);
   void publish();
+  // The inputs' watch (at each publication): the alarm when an ingestion node has gone silent.
+  void watchInputs(const ros::Time& now);
   // Drops every track when the clock has gone backwards (a looping bag); true when it did.
   bool checkClock(const ros::Time& now);
   asv_msgs::Target toMsg(const asv::TrackEstimate& e) const;
@@ -57,6 +61,8 @@ private:
   ros::Timer diag_timer_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kTracking};
   diagnostic_updater::Updater updater_;
+  asv::InputWatch watch_{params_.watch};
+  asv_ros::AlarmReporter alarm_{nh_};
 
   asv::ClockJumpDetector clock_;
   std::uint64_t rejected_[static_cast<std::size_t>(TrackReject::kCount)] = {};

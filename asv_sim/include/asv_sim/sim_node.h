@@ -19,6 +19,7 @@
 #include <asv_core/sim/lockstep.h>
 #include <asv_core/sim/sim_node_config.h>
 #include <asv_core/sim/simulation.h>
+#include <asv_ros/alarm.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/LockstepAck.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -85,6 +86,10 @@ private:
   ros::Publisher clock_pub_, nmea_pub_, ships_pub_, events_pub_, markers_pub_, land_pub_;
   std::vector<ros::Publisher> odom_pubs_;
   std::vector<ros::Subscriber> cmd_subs_;
+  asv::InputWatch cmd_watch_;  // each ship's cmd topic (free-running)
+  std::unique_ptr<asv_ros::AlarmReporter> alarm_;
+  // The set-points' watch: an alarm when a ship's planner has stopped sending (after her first).
+  void watchCmds();
   tf2_ros::TransformBroadcaster tf_;
   diagnostic_updater::Updater updater_;
   int udp_fd_ = -1;

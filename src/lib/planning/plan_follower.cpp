@@ -25,6 +25,7 @@ void PlanFollowerConfig::validate() const {
   require(extremis_range >= 0 && plan_clearance >= 0, "extremis_range and plan_clearance must be >= 0 m");
   require(prediction_horizon > 0, "prediction_horizon must be > 0 s");
   require(min_separation >= 0 && risk_clear_time >= 0, "min_separation and risk_clear_time must be >= 0");
+  require(degraded_plan_hold >= 0, "degraded_plan_hold must be >= 0 s");
   require(min_obstacle_clearance_m >= 0, "min_obstacle_clearance_m must be >= 0 m");
   require(limits.max_speed > 0 && limits.min_speed >= 0 && limits.min_speed <= limits.max_speed,
           "speeds must satisfy 0 <= min_speed <= max_speed, max_speed > 0");
@@ -46,6 +47,7 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   c.min_separation = p.getDouble("min_separation", c.min_separation);
   c.stand_on_policy = p.getBool("stand_on_policy", c.stand_on_policy);
   c.risk_clear_time = p.getDouble("risk_clear_time", c.risk_clear_time);
+  c.degraded_plan_hold = p.getDouble("degraded_plan_hold", c.degraded_plan_hold);
   c.min_obstacle_clearance_m = p.getDouble("min_obstacle_clearance_m", c.min_obstacle_clearance_m);
   c.limits.max_speed = p.getDouble("max_speed", c.limits.max_speed);
   c.limits.min_speed = p.getDouble("min_speed", c.limits.min_speed);
@@ -315,6 +317,10 @@ Eigen::Vector2d PlanFollower::goalOrAhead() const {
 bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why) {
   if (!have_plan_)
     return why = "first plan", true;
+  if (recovered_) {
+    recovered_ = false;
+    return why = "picture back after degraded operation", true;
+  }
   const double since = now - last_plan_time_;
   if (since < cfg_.min_replan_interval)
     return false;
@@ -362,6 +368,40 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
   if (since >= cfg_.replan_period && plan_.status != PlanStatus::Ok)
     return why = "periodic (last plan not ok)", true;
   return false;
+}
+
+std::vector<PlannerTarget> PlanFollower::deadReckon(std::vector<PlannerTarget> targets, double stamp,
+                                                    double now) {
+  for (PlannerTarget& t : targets)
+    t.state.position += courseSpeedToVelocity(t.state.course, t.state.speed) * (now - stamp);
+  return targets;
+}
+
+const Plan& PlanFollower::degrade(double now, const std::vector<PlannerTarget>& last_known,
+                                  const std::string& cause) {
+  if (degraded_since_ < 0.0)
+    degraded_since_ = now;
+  if (!own_)
+    return plan_;
+  const bool keep = have_plan_ && plan_.status == PlanStatus::Ok && now - degraded_since_ <= cfg_.degraded_plan_hold &&
+                    predictedClearance(last_known) >= std::max(cfg_.plan_clearance, cfg_.min_separation) &&
+                    !landAhead();
+  if (keep)
+    return plan_;
+  // Holding course is renewed only when it began elsewhere: the course held is the one the ship had
+  // when the picture went, not wherever she has drifted since.
+  if (have_plan_ && plan_.status == PlanStatus::Fallback && plan_.message.rfind("degraded", 0) == 0)
+    return plan_;
+  Plan f = fallback(last_known, "no picture: " + cause);
+  f.message = "degraded: " + f.message;
+  return acceptPlan(std::move(f), now, {}, "degraded");
+}
+
+void PlanFollower::recover() {
+  if (degraded_since_ < 0.0)
+    return;
+  degraded_since_ = -1.0;
+  recovered_ = true;
 }
 
 const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<PlannerTarget>& targets,

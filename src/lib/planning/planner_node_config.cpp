@@ -38,6 +38,8 @@ PlannerNodeConfig PlannerNodeConfig::fromParams(const ParamMap& p) {
   c.stale_after = p.getDouble("stale_after", c.stale_after);
   c.distributed = p.getBool("distributed", c.distributed);
   c.follower = PlanFollowerConfig::fromParams(p);
+  c.watch = InputWatchConfig::fromParams(p);
+  c.upstream_nodes = p.getStringList("watch/upstream_nodes", c.upstream_nodes);
   c.validate();
   return c;
 }

@@ -59,6 +59,7 @@ RiskNodeConfig RiskNodeConfig::fromParams(const ParamMap& p) {
   c.min_rate = p.getDouble("min_rate", c.min_rate);
   c.max_rate = p.getDouble("max_rate", c.max_rate);
   c.risk = riskConfigFromParams(p);
+  c.watch = InputWatchConfig::fromParams(p);
   c.validate();
   return c;
 }

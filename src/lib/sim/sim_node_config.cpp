@@ -68,6 +68,7 @@ SimNodeConfig SimNodeConfig::fromParams(const ParamMap& p) {
   c.odom_rate = p.getDouble("odom_rate", c.odom_rate);
   c.ships_rate = p.getDouble("ships_rate", c.ships_rate);
   c.emit_topic = p.getBool("emit_topic", c.emit_topic);
+  c.watch = InputWatchConfig::fromParams(p, c.watch);
   c.emit_udp = p.getBool("emit_udp", c.emit_udp);
   c.udp_host = p.getString("udp_host", c.udp_host);
   c.udp_port = p.getInt("udp_port", c.udp_port);

@@ -17,6 +17,7 @@ void IngestionConfig::readShared(const ParamMap& p) {
   frame_id = p.getString("frame_id", frame_id);
   publish_rate = p.getDouble("publish_rate", publish_rate);
   silence_warning = p.getDouble("silence_warning", silence_warning);
+  heartbeat_period = p.getDouble("heartbeat_period", heartbeat_period);
   max_sentence_length = p.getSize("max_sentence_length", max_sentence_length, nmea::kStandardMaxLength);
 }
 
@@ -32,6 +33,8 @@ void IngestionConfig::validateShared() const {
     throw std::invalid_argument("publish_rate must be in (0, 100] Hz");
   if (!(silence_warning > 0.0))
     throw std::invalid_argument("silence_warning must be > 0 s");
+  if (!(heartbeat_period > 0.0 && heartbeat_period <= 60.0))
+    throw std::invalid_argument("heartbeat_period must be in (0, 60] s");
 }
 
 void readTableLimits(const ParamMap& p, double& max_range, std::size_t& max_targets, double& forget_after) {

@@ -33,6 +33,7 @@ TrackerNodeConfig TrackerNodeConfig::fromParams(const ParamMap& p) {
   n.default_position_sigma = p.getDouble("default_position_sigma", n.default_position_sigma);
   n.ais_velocity_sigma = p.getDouble("ais_velocity_sigma", n.ais_velocity_sigma);
   n.arpa_velocity_sigma = p.getDouble("arpa_velocity_sigma", n.arpa_velocity_sigma);
+  n.watch = InputWatchConfig::fromParams(p);
   TrackerConfig& c = n.tracker;
   c.gate_min = p.getDouble("gate_min", c.gate_min);
   c.gate_sigmas = p.getDouble("gate_sigmas", c.gate_sigmas);

@@ -42,6 +42,10 @@ struct PlanFollowerConfig {
   // [m] every plan keeps the track this far from static obstacles (land); a ship already closer may not
   // halve her distance. 0.1 nm, as MOPSO's land clearance (Hu et al. 2017 Fig. 4(b)): our choice.
   double min_obstacle_clearance_m = 185.2;
+  // [s] degraded operation (degrade()): the plan in force is kept at most this long after the data was
+  // lost, and only while it still passes the last known targets; our choice: a minute, within which a
+  // ship at 12 kn sails 370 m and a crossing target's position estimate is still a few hundred metres good
+  double degraded_plan_hold = 60.0;
   double risk_clear_time = 60.0;       // [s] a target's risk must stay none, with its CPA past, this
                                        // long before a new rise replans again (tracking noise flickers
                                        // round thresholds; a plan that works lowers the risk)
@@ -104,11 +108,25 @@ public:
   // The problem for the targets now (each with its risk picture).
   PlanningProblem buildProblem(double now, const std::vector<PlannerTarget>& targets) const;
   bool replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why);
+  // Targets of a picture taken at `stamp`, moved on to `now` at their course and speed.
+  static std::vector<PlannerTarget> deadReckon(std::vector<PlannerTarget> targets, double stamp, double now);
   Plan fallback(const std::vector<PlannerTarget>& targets, const std::string& why) const;
   // Stores a plan made at `now` (NoSolution becomes the fallback) and the risk levels it saw.
   // Returns the plan in force.
   const Plan& acceptPlan(Plan plan, double now, const std::vector<PlannerTarget>& targets,
                          const std::string& why);
+  // Degraded operation, while the picture the plans are made on is lost (the risk assessment or the
+  // tracks gone stale, a stage upstream down): absence of data is not absence of danger, so no new plan
+  // is made. The plan in force is kept while it is Ok, younger than degraded_plan_hold since the loss
+  // began, and still passes the last known targets (`last_known`, dead-reckoned to now) by
+  // plan_clearance and land by the required clearance; otherwise the ship holds her present course at
+  // fallback_speed_factor of the cruise speed (the fallback, with its extremis turn and its stop short of
+  // land). `cause` is shown in the plan's message. Returns the plan in force.
+  const Plan& degrade(double now, const std::vector<PlannerTarget>& last_known, const std::string& cause);
+  // The data is back: the next replanNeeded() asks for a plan at once ("picture back").
+  void recover();
+  bool degraded() const { return degraded_since_ >= 0.0; }
+
   // Course and speed to steer now; false while there is no plan (or no own state).
   bool setpoint(double& course, double& speed);
 
@@ -137,6 +155,8 @@ private:
   size_t wp_index_ = 1;
   double last_plan_time_ = -1e300;
   double course_sp_ = 0.0, speed_sp_ = 0.0;
+  double degraded_since_ = -1.0;  // when degraded operation began (< 0: not degraded)
+  bool recovered_ = false;        // the picture came back: replan at once
   uint64_t replans_ = 0, fallbacks_ = 0;
 };
 

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "asv_core/charts/charts.h"
+#include "asv_core/common/input_watch.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/planning/plan_follower.h"
 
@@ -28,6 +29,10 @@ struct PlannerNodeConfig {
   double stale_after = 10.0;      // [s] risk/targets older than this are ignored
   bool distributed = false;       // dssa, dssa_plus: exchange intentions with the other DSSA ships
   PlanFollowerConfig follower;    // replanning, fallback and own-ship limits (the same keys, top level)
+  InputWatchConfig watch;         // watch/*: odometry, risk and targets stale after watch/input_timeout
+  // watch/upstream_nodes: nodes (by name, any namespace) whose ERROR alarm on `alarms` means the
+  // picture is incomplete: degraded operation as for a stale input
+  std::vector<std::string> upstream_nodes{"tracker", "risk_node"};
 
   // Throws std::invalid_argument naming the first value out of range.
   void validate() const;

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "asv_core/common/input_watch.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/risk/risk_assessment.h"
 
@@ -24,6 +25,7 @@ struct RiskNodeConfig {
   double min_rate = 0.5;   // [Hz] diagnostics: expected /risk rate window
   double max_rate = 50.0;  // [Hz]
   RiskConfig risk;
+  InputWatchConfig watch;  // watch/*: targets and odometry stale after watch/input_timeout: alarm
 
   void validate() const;  // std::invalid_argument naming the parameter
   static RiskNodeConfig fromParams(const ParamMap& params);

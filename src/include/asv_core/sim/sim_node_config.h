@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "asv_core/charts/charts.h"
+#include "asv_core/common/input_watch.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/sim/simulation.h"
 
@@ -26,6 +27,10 @@ struct SimNodeConfig {
   std::string udp_host = "127.0.0.1";
   int udp_port = 10110;
   bool stop_on_collision = false;
+  // watch/*: a ship's set-points (<ship>/cmd, 1 Hz from planner_node) missing for input_timeout after the
+  // first: alarm (the ship holds her last set-point). The planner's plan may take 0.5 s of wall time,
+  // and twice that before it is discarded: 3 s and a 1.5 s wall floor are our choice.
+  InputWatchConfig watch{3.0, 10.0, 1.5};
   bool shutdown_at_end = true;  // shut the node down when the scenario ends (launch: required="true")
   // Before shutting down, wait (publishing the final clock) until this node has left the master, at
   // most linger_max seconds: the evaluator writes its result after the END event, and the launch ends

@@ -25,6 +25,9 @@ struct IngestionConfig {
   std::string frame_id = "map";
   double publish_rate = 10.0;             // [Hz] the node's targets topic
   double silence_warning = 30.0;          // [s] diagnostics warn when no sentence came for this long
+  // [s] an empty targets array this often when nothing was reported, so that the tracker tells a quiet
+  // sea from a dead node (its watch/input_timeout, 1.5 s, is three of these)
+  double heartbeat_period = 0.5;
   std::size_t max_sentence_length = 512;  // [bytes] framer limit (tag block included)
 
   // Reads the shared keys (this struct's values are the defaults).

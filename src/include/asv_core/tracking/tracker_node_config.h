@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "asv_core/common/input_watch.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/tracking/tracker.h"
 
@@ -17,6 +18,7 @@ struct TrackerNodeConfig {
   double ais_velocity_sigma = 0.2;       // [m/s] 1-sigma of an AIS velocity per axis
   double arpa_velocity_sigma = 0.5;      // [m/s] 1-sigma of an ARPA velocity per axis
   TrackerConfig tracker;  // keys gate_min ... max_tracks, ages/<class>/{coast_after,drop_after}
+  InputWatchConfig watch;  // watch/*: ais/targets and arpa/targets (heartbeats) stale: alarm
 
   void validate() const;  // std::invalid_argument naming the parameter
   static TrackerNodeConfig fromParams(const ParamMap& params);
