@@ -15,6 +15,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <asv_ros/nmea_output.h>
 #include <asv_ros/params.h>
 
 namespace asv_risk {
@@ -26,27 +27,6 @@ constexpr int kPollMs = 200;                   // how often the reader looks at 
 
 const std::set<std::string> kTypes = {"udp", "tcp", "serial", "file", "topic"};
 const std::set<std::string> kTimings = {"tags", "rate", "fast"};
-
-speed_t baudConstant(int baud) {
-  switch (baud) {
-    case 4800:
-      return B4800;
-    case 9600:
-      return B9600;
-    case 19200:
-      return B19200;
-    case 38400:
-      return B38400;
-    case 57600:
-      return B57600;
-    case 115200:
-      return B115200;
-    case 230400:
-      return B230400;
-    default:
-      return B0;
-  }
-}
 
 // Closes a file descriptor when it goes out of scope.
 struct Fd {
@@ -98,7 +78,7 @@ void NmeaInputParams::validate() const {
   if (type == "serial") {
     if (serial_device.empty())
       throw std::invalid_argument("input/serial/device must not be empty");
-    if (baudConstant(serial_baud) == B0)
+    if (asv_ros::baudConstant(serial_baud) == B0)
       throw std::invalid_argument(
           "input/serial/baud must be one of 4800, 9600, 19200, 38400, 57600, 115200, 230400");
   }
@@ -423,8 +403,8 @@ void NmeaInput::runSerial() {
       tio.c_cflag &= ~(CSTOPB | PARENB | CRTSCTS);
       tio.c_cc[VMIN] = 0;
       tio.c_cc[VTIME] = 0;
-      ok = ::cfsetispeed(&tio, baudConstant(params_.serial_baud)) == 0 &&
-           ::cfsetospeed(&tio, baudConstant(params_.serial_baud)) == 0 &&
+      ok = ::cfsetispeed(&tio, asv_ros::baudConstant(params_.serial_baud)) == 0 &&
+           ::cfsetospeed(&tio, asv_ros::baudConstant(params_.serial_baud)) == 0 &&
            ::tcsetattr(s.fd, TCSANOW, &tio) == 0;
     }
     if (!ok) {

@@ -1,10 +1,5 @@
 #include "asv_sim/sim_node.h"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -82,9 +77,10 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
     }
   }
   if (params_.emit_udp) {
-    udp_fd_ = ::socket(AF_INET, SOCK_DGRAM, 0);
-    if (udp_fd_ < 0)
-      throw std::runtime_error("cannot create a UDP socket");
+    asv_ros::NmeaOutputConfig out;
+    out.udp_host = params_.udp_host;
+    out.udp_port = params_.udp_port;
+    udp_out_ = std::make_unique<asv_ros::NmeaOutput>(out);
   }
   if (params_.rate == 0.0 && !params_.keep_up_topic.empty())
     keep_up_sub_ = nh_.subscribe<asv_msgs::RiskAssessment>(
@@ -109,10 +105,7 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
            static_cast<unsigned long>(params_.seed));
 }
 
-SimNode::~SimNode() {
-  if (udp_fd_ >= 0)
-    ::close(udp_fd_);
-}
+SimNode::~SimNode() = default;
 
 void SimNode::cmdCallback(const std::string& ship, const std::string& topic,
                           const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg) {
@@ -146,16 +139,8 @@ void SimNode::publishNmea(const std::vector<std::string>& lines, const ros::Time
       nmea_pub_.publish(m);
       lockstep_.published(nmea_pub_.getTopic());
     }
-    if (udp_fd_ >= 0) {
-      sockaddr_in addr{};
-      addr.sin_family = AF_INET;
-      addr.sin_port = htons(static_cast<uint16_t>(params_.udp_port));
-      if (::inet_pton(AF_INET, params_.udp_host.c_str(), &addr.sin_addr) == 1) {
-        const std::string datagram = l + "\r\n";
-        ::sendto(udp_fd_, datagram.data(), datagram.size(), 0, reinterpret_cast<sockaddr*>(&addr),
-                 sizeof addr);
-      }
-    }
+    if (udp_out_)
+      udp_out_->send(l);
     ++nmea_sent_;
   }
 }

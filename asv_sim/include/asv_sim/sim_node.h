@@ -20,6 +20,7 @@
 #include <asv_core/sim/sim_node_config.h>
 #include <asv_core/sim/simulation.h>
 #include <asv_ros/alarm.h>
+#include <asv_ros/nmea_output.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/LockstepAck.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -92,7 +93,7 @@ private:
   void watchCmds();
   tf2_ros::TransformBroadcaster tf_;
   diagnostic_updater::Updater updater_;
-  int udp_fd_ = -1;
+  std::unique_ptr<asv_ros::NmeaOutput> udp_out_;  // emit_udp: each sentence as a datagram
   uint64_t cmds_ok_ = 0, cmds_rejected_ = 0, nmea_sent_ = 0;
   double achieved_rtf_ = 0.0;
   ros::Subscriber keep_up_sub_;

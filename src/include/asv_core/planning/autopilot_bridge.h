@@ -1,0 +1,86 @@
+// The autopilot bridge's logic, free of ROS (asv_planning's autopilot_bridge node wraps it): the
+// planner's course/speed set-points become what an NMEA 0183 autopilot steers by (APB, RMB, XTE, HSC;
+// codec/autopilot.h), at a fixed rate, only while armed, with a watchdog:
+//  - disarmed (the default at start): nothing is sent; the autopilot stays in whatever mode its
+//    operator left it;
+//  - the set-points stop (planner down, or stamps older than watch/input_timeout): an alarm, and the
+//    configured safe action: hold_course (keep sending the last course, so the autopilot holds it) or
+//    invalidate (every sentence with status V / mode N: an autopilot in track mode drops out of it and
+//    alarms at its console);
+//  - the own position stops (odometry stale): the route sentences cannot be computed: status V on APB,
+//    RMB and XTE, HSC keeps the last course;
+// and a twist (forward speed and yaw rate towards the heading to steer) for a vehicle driven by
+// geometry_msgs/TwistStamped.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "asv_core/codec/autopilot.h"
+#include "asv_core/common/input_watch.h"
+#include "asv_core/common/param_map.h"
+
+namespace asv {
+
+// asv_planning/config/autopilot_bridge.yaml documents every key.
+struct AutopilotBridgeConfig {
+  // The map frame's origin, for RMB's waypoint position: origin_scenario (a scenario file's origin) or
+  // origin_lat_deg/origin_lon_deg (both; the stack's other nodes use the same keys)
+  std::string origin_scenario;
+  std::optional<double> origin_lat_deg, origin_lon_deg;
+  std::string talker = "EC";  // NMEA talker of the sentences (EC: electronic chart system)
+  std::vector<std::string> sentences{"APB", "RMB", "XTE", "HSC"};
+  double rate = 1.0;  // [Hz] sentences out (what autopilots expect); faster set-points wait for it
+  std::string safe_action = "hold_course";  // hold_course | invalidate
+  bool armed_at_start = false;
+  std::optional<double>
+      variation;               // [rad] magnetic variation, east positive (key variation_deg; unset: none)
+  double twist_gain = 0.5;     // [1/s] yaw rate per radian of heading error
+  double max_yaw_rate = 0.05;  // [rad/s] (about 3 deg/s)
+  autopilot::LegConfig leg;    // lookahead, leg_change_deg
+  // watch/*: set-points (1 Hz from planner_node) and odometry stale after watch/input_timeout (3 s: a plan
+  // may hold the set-point job up by a second)
+  InputWatchConfig watch{3.0, 10.0, 0.5};
+
+  void validate() const;  // std::invalid_argument naming the key
+  static AutopilotBridgeConfig fromParams(const ParamMap& params);
+};
+
+class AutopilotBridge {
+public:
+  explicit AutopilotBridge(const AutopilotBridgeConfig& config);
+
+  // Inputs, each with the node's clock (ROS time) and wall time [s].
+  void setpoint(double course, double speed, double stamp, double now, double wall);
+  void own(const Eigen::Vector2d& position, double course_over_ground, double speed, double heading,
+           double now, double wall);
+  void arm(bool armed) { armed_ = armed; }
+  bool armed() const { return armed_; }
+
+  struct Output {
+    std::vector<std::string> sentences;  // empty while disarmed or before the first set-point
+    bool valid = false;                  // the route sentences carry status A
+    double speed = 0.0;                  // [m/s] twist forward speed (0 when invalidated or disarmed)
+    double yaw_rate = 0.0;               // [rad/s] ENU (counter-clockwise positive)
+    std::vector<StaleInput> lost;        // the watchdog's findings (alarm causes)
+    std::string action;                  // what is being done about them ("" when nothing is lost)
+  };
+  // What to send now; `to_latlon` converts the map position of the leg's destination for RMB.
+  Output tick(double now, double wall,
+              const std::function<void(const Eigen::Vector2d&, double&, double&)>& to_latlon);
+
+private:
+  AutopilotBridgeConfig cfg_;
+  InputWatch watch_;
+  autopilot::SetpointLeg leg_;
+  bool armed_ = false;
+  std::optional<double> course_, speed_;
+  std::optional<Eigen::Vector2d> position_;
+  double cog_ = 0.0, sog_ = 0.0, heading_ = 0.0;
+};
+
+}  // namespace asv

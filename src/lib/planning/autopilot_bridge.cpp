@@ -1,0 +1,137 @@
+#include "asv_core/planning/autopilot_bridge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "asv_core/common/units.h"
+
+namespace asv {
+
+namespace {
+
+constexpr const char* kSetpoint = "set-point";
+constexpr const char* kOwn = "odometry";
+
+}  // namespace
+
+void AutopilotBridgeConfig::validate() const {
+  static const std::set<std::string> known{"APB", "RMB", "XTE", "HSC"};
+  if (origin_scenario.empty() && !origin_lat_deg)
+    throw std::invalid_argument(
+        "origin_lat_deg and origin_lon_deg (or origin_scenario) are required (map origin)");
+  if (talker.size() != 2)
+    throw std::invalid_argument("talker must be two characters (e.g. EC, GP)");
+  for (const std::string& s : sentences)
+    if (!known.count(s))
+      throw std::invalid_argument("sentences: unknown sentence '" + s + "' (APB, RMB, XTE, HSC)");
+  if (!(rate > 0.0 && rate <= 10.0))
+    throw std::invalid_argument("rate must be in (0, 10] Hz");
+  if (safe_action != "hold_course" && safe_action != "invalidate")
+    throw std::invalid_argument("safe_action must be hold_course or invalidate");
+  if (variation && !(std::fabs(*variation) <= kPi / 2))
+    throw std::invalid_argument("variation_deg must be within +-90 deg");
+  if (!(twist_gain >= 0.0) || !(max_yaw_rate > 0.0))
+    throw std::invalid_argument("twist_gain must be >= 0 and max_yaw_rate > 0");
+  leg.validate();
+  watch.validate();
+}
+
+AutopilotBridgeConfig AutopilotBridgeConfig::fromParams(const ParamMap& p) {
+  AutopilotBridgeConfig c;
+  c.origin_scenario = p.getString("origin_scenario", c.origin_scenario);
+  if (p.has("origin_lat_deg") != p.has("origin_lon_deg"))
+    throw std::invalid_argument("give both origin_lat_deg and origin_lon_deg (origin of the map frame)");
+  if (p.has("origin_lat_deg")) {
+    c.origin_lat_deg = p.getDouble("origin_lat_deg", 0.0);
+    c.origin_lon_deg = p.getDouble("origin_lon_deg", 0.0);
+  }
+  c.talker = p.getString("talker", c.talker);
+  c.sentences = p.getStringList("sentences", c.sentences);
+  c.rate = p.getDouble("rate", c.rate);
+  c.safe_action = p.getString("safe_action", c.safe_action);
+  c.armed_at_start = p.getBool("armed_at_start", c.armed_at_start);
+  if (p.has("variation_deg"))
+    c.variation = degToRad(p.getDouble("variation_deg", 0.0));
+  c.twist_gain = p.getDouble("twist_gain", c.twist_gain);
+  c.max_yaw_rate = p.getDouble("max_yaw_rate", c.max_yaw_rate);
+  c.leg.lookahead = p.getDouble("lookahead", c.leg.lookahead);
+  c.leg.leg_change = degToRad(p.getDouble("leg_change_deg", radToDeg(c.leg.leg_change)));
+  c.watch = InputWatchConfig::fromParams(p, c.watch);
+  c.validate();
+  return c;
+}
+
+AutopilotBridge::AutopilotBridge(const AutopilotBridgeConfig& config)
+    : cfg_(config), watch_(config.watch), leg_(config.leg), armed_(config.armed_at_start) {
+  cfg_.validate();
+  watch_.add(kSetpoint);
+  watch_.add(kOwn);
+}
+
+void AutopilotBridge::setpoint(double course, double speed, double stamp, double now, double wall) {
+  if (!allFinite({course, speed}))
+    return;
+  course_ = wrapTwoPi(course);
+  speed_ = std::max(0.0, speed);
+  // A set-point stamped long ago (a planner whose clock stopped) is no sign of life.
+  if (now - stamp <= cfg_.watch.input_timeout)
+    watch_.received(kSetpoint, now, wall);
+}
+
+void AutopilotBridge::own(const Eigen::Vector2d& position, double course_over_ground, double speed,
+                          double heading, double now, double wall) {
+  if (!allFinite({position.x(), position.y(), course_over_ground, speed, heading}))
+    return;
+  position_ = position;
+  cog_ = course_over_ground;
+  sog_ = speed;
+  heading_ = heading;
+  watch_.received(kOwn, now, wall);
+}
+
+AutopilotBridge::Output AutopilotBridge::tick(
+    double now, double wall, const std::function<void(const Eigen::Vector2d&, double&, double&)>& to_latlon) {
+  Output out;
+  for (const StaleInput& s : watch_.stale(now, wall))
+    if (s.name == kOwn || watch_.everReceived(s.name))  // no set-point yet is waiting, not a fault
+      out.lost.push_back(s);
+  bool setpoint_lost = false, own_lost = !position_.has_value();
+  for (const StaleInput& s : out.lost)
+    (s.name == kSetpoint ? setpoint_lost : own_lost) = true;
+  if (!armed_ || !course_)
+    return out;
+  const bool invalidate = setpoint_lost && cfg_.safe_action == "invalidate";
+  out.action = setpoint_lost
+                   ? (invalidate ? "sentences sent invalid (status V): the autopilot drops track mode"
+                                 : "the last course is held")
+                   : (own_lost ? "no own position: APB, RMB, XTE invalid, HSC holds the last course" : "");
+  autopilot::Steering s;
+  if (position_)
+    s = leg_.update(*course_, *position_, cog_, sog_);
+  else
+    s.bearing_leg = s.bearing_to_dest = s.heading_to_steer = *course_;
+  s.valid = !invalidate && !own_lost;
+  to_latlon(leg_.destination(), s.dest_lat_deg, s.dest_lon_deg);
+  for (const std::string& name : cfg_.sentences) {
+    if (name == "APB")
+      out.sentences.push_back(autopilot::encodeApb(s, cfg_.talker));
+    else if (name == "RMB")
+      out.sentences.push_back(autopilot::encodeRmb(s, cfg_.talker));
+    else if (name == "XTE")
+      out.sentences.push_back(autopilot::encodeXte(s, cfg_.talker));
+    else if (!invalidate)  // HSC has no status field: an invalid heading command is not sent
+      out.sentences.push_back(
+          autopilot::encodeHsc(own_lost ? *course_ : s.heading_to_steer, cfg_.variation, cfg_.talker));
+  }
+  out.valid = s.valid;
+  if (!invalidate) {
+    out.speed = *speed_;
+    const double error = wrapPi(s.heading_to_steer - heading_);  // > 0: turn to starboard (clockwise)
+    out.yaw_rate = -std::clamp(cfg_.twist_gain * error, -cfg_.max_yaw_rate, cfg_.max_yaw_rate);
+  }
+  return out;
+}
+
+}  // namespace asv

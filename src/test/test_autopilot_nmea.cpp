@@ -1,0 +1,181 @@
+// The set-point leg and the autopilot sentences (codec/autopilot.h). Expected values by hand, the
+// checksums computed apart (Python: XOR of the body's characters):
+//  - set-point 090 from (0, 0): the leg runs east from there. The ship at (1000, 100), 100 m north
+//    (left) of it, making 090 at 5 m/s: foot point 1000 m along, destination (2852, 0); bearing to it
+//    atan2(1852, -100) = 93.09 deg; range hypot(1852, 100) = 1854.7 m = 1.00 nm; closing speed
+//    5 cos(3.09 deg) = 4.993 m/s = 9.7 kn; cross-track 100 m = 0.054 nm, steer right.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "asv_core/codec/autopilot.h"
+#include "asv_core/common/units.h"
+#include "asv_core/planning/autopilot_bridge.h"
+
+namespace ap = asv::autopilot;
+
+namespace {
+
+ap::Steering eastLeg(ap::SetpointLeg& leg) {
+  leg.update(asv::degToRad(90.0), {0.0, 0.0}, asv::degToRad(90.0), 5.0);
+  return leg.update(asv::degToRad(90.0), {1000.0, 100.0}, asv::degToRad(90.0), 5.0);
+}
+
+}  // namespace
+
+TEST(AutopilotLeg, TheSetpointBecomesALegTheShipIsSteeredBackOnto) {
+  ap::SetpointLeg leg;
+  const ap::Steering s = eastLeg(leg);
+  EXPECT_NEAR(s.cross_track, -100.0, 1e-9);  // left of the leg
+  EXPECT_NEAR(leg.destination().x(), 2852.0, 1e-9);
+  EXPECT_NEAR(leg.destination().y(), 0.0, 1e-9);
+  EXPECT_NEAR(asv::radToDeg(s.bearing_to_dest), 93.0907, 1e-4);
+  EXPECT_NEAR(s.heading_to_steer, s.bearing_to_dest, 1e-12);
+  EXPECT_NEAR(s.range_to_dest, 1854.698, 1e-3);
+  EXPECT_NEAR(s.closing_speed, 4.99273, 1e-5);
+  EXPECT_EQ(s.origin_id, "ASV0");
+  EXPECT_EQ(s.dest_id, "ASV1");
+}
+
+TEST(AutopilotLeg, ANewLegOnlyWhenTheCourseChangesByMoreThanOneDegree) {
+  ap::SetpointLeg leg;
+  eastLeg(leg);
+  leg.update(asv::degToRad(90.5), {1000.0, 100.0}, asv::degToRad(90.0), 5.0);
+  EXPECT_EQ(leg.legs(), 1);
+  const ap::Steering s = leg.update(asv::degToRad(92.0), {1000.0, 100.0}, asv::degToRad(90.0), 5.0);
+  EXPECT_EQ(leg.legs(), 2);
+  EXPECT_NEAR(s.cross_track, 0.0, 1e-9);  // the new leg starts where the ship is
+  EXPECT_EQ(s.origin_id, "ASV1");
+  EXPECT_EQ(s.dest_id, "ASV2");
+  EXPECT_THROW(ap::SetpointLeg(ap::LegConfig{0.0, 0.0175}), std::invalid_argument);
+}
+
+TEST(AutopilotSentences, ApbXteRmbHscAsLaidOut) {
+  ap::SetpointLeg leg;
+  ap::Steering s = eastLeg(leg);
+  s.dest_lat_deg = 54.5;
+  s.dest_lon_deg = -18.25;
+  EXPECT_EQ(ap::encodeApb(s), "$ECAPB,A,A,0.054,R,N,V,V,90.0,T,ASV1,93.1,T,93.1,T,A*3D");
+  EXPECT_EQ(ap::encodeXte(s), "$ECXTE,A,A,0.054,R,N,A*3D");
+  EXPECT_EQ(ap::encodeRmb(s), "$ECRMB,A,0.05,R,ASV0,ASV1,5430.0000,N,01815.0000,W,1.0,93.1,9.7,V,A*79");
+  EXPECT_EQ(ap::encodeHsc(s.heading_to_steer, asv::degToRad(5.0)), "$ECHSC,93.1,T,88.1,M*4D");
+  EXPECT_EQ(ap::encodeHsc(s.heading_to_steer, std::nullopt), "$ECHSC,93.1,T,,M*52");
+  s.valid = false;  // do not steer by this: status V, mode N
+  EXPECT_EQ(ap::encodeApb(s), "$ECAPB,V,V,0.054,R,N,V,V,90.0,T,ASV1,93.1,T,93.1,T,N*32");
+}
+
+TEST(AutopilotSentences, PositionFields) {
+  EXPECT_EQ(ap::latitudeField(-33.8568), "3351.4080,S");        // 0.8568 deg = 51.408'
+  EXPECT_EQ(ap::longitudeField(151.2153), "15112.9180,E");      // 0.2153 deg = 12.918'
+  EXPECT_EQ(ap::latitudeField(10.99999999999), "1100.0000,N");  // 59.9999999' rounds up a degree
+  EXPECT_EQ(ap::longitudeField(-0.5), "00030.0000,W");
+}
+
+// The bridge's watchdog and arming (planning/autopilot_bridge.h), on the same east leg.
+namespace {
+
+asv::AutopilotBridgeConfig bridgeConfig(const std::string& safe_action) {
+  asv::ParamMap p;
+  p.set("origin_lat_deg", 54.6);
+  p.set("origin_lon_deg", 18.8);
+  p.set("safe_action", safe_action);
+  p.set("watch/input_timeout", 1.0);
+  p.set("watch/wall_floor", 0.0);
+  return asv::AutopilotBridgeConfig::fromParams(p);
+}
+
+void noLatLon(const Eigen::Vector2d&, double& lat, double& lon) {
+  lat = 54.6;
+  lon = 18.8;
+}
+
+// Armed, set-point 090 at t = 0 from (0, 0), then the ship at (1000, 100) at t = 0.5, heading north
+// (0 rad) so that the twist has a heading error to turn.
+asv::AutopilotBridge steering(const std::string& safe_action) {
+  asv::AutopilotBridge b(bridgeConfig(safe_action));
+  b.arm(true);
+  b.setpoint(asv::degToRad(90.0), 5.0, 0.0, 0.0, 0.0);
+  b.own({0.0, 0.0}, asv::degToRad(90.0), 5.0, 0.0, 0.0, 0.0);
+  b.tick(0.0, 0.0, noLatLon);
+  b.own({1000.0, 100.0}, asv::degToRad(90.0), 5.0, 0.0, 0.5, 0.5);
+  return b;
+}
+
+}  // namespace
+
+TEST(AutopilotBridge, NothingGoesOutDisarmedOrBeforeASetpoint) {
+  asv::AutopilotBridge b(bridgeConfig("hold_course"));
+  EXPECT_FALSE(b.armed());  // armed_at_start is false by default
+  b.own({0.0, 0.0}, 0.0, 5.0, 0.0, 0.0, 0.0);
+  b.setpoint(0.0, 5.0, 0.0, 0.0, 0.0);
+  EXPECT_TRUE(b.tick(0.1, 0.1, noLatLon).sentences.empty());
+  asv::AutopilotBridge c(bridgeConfig("hold_course"));
+  c.arm(true);
+  c.own({0.0, 0.0}, 0.0, 5.0, 0.0, 0.0, 0.0);
+  const auto out = c.tick(0.1, 0.1, noLatLon);
+  EXPECT_TRUE(out.sentences.empty());
+  EXPECT_TRUE(out.lost.empty());  // no set-point yet is waiting, not a fault
+}
+
+TEST(AutopilotBridge, SteersTheLegAndTurnsTheTwistToStarboard) {
+  asv::AutopilotBridge b = steering("hold_course");
+  const auto out = b.tick(0.6, 0.6, noLatLon);
+  ASSERT_EQ(out.sentences.size(), 4u);  // APB, RMB, XTE, HSC
+  EXPECT_EQ(out.sentences[0], "$ECAPB,A,A,0.054,R,N,V,V,90.0,T,ASV1,93.1,T,93.1,T,A*3D");
+  EXPECT_EQ(out.sentences[3], "$ECHSC,93.1,T,,M*52");
+  EXPECT_TRUE(out.valid);
+  EXPECT_DOUBLE_EQ(out.speed, 5.0);
+  // Heading 000, heading to steer 093.1: 0.5 x 1.625 rad/s, limited to 0.05; clockwise is negative in ENU.
+  EXPECT_DOUBLE_EQ(out.yaw_rate, -0.05);
+}
+
+TEST(AutopilotBridge, LostSetpointsHoldTheCourseOrInvalidate) {
+  asv::AutopilotBridge hold = steering("hold_course");
+  hold.own({1000.0, 100.0}, asv::degToRad(90.0), 5.0, 0.0, 1.5, 1.5);
+  auto out = hold.tick(1.5, 1.5, noLatLon);  // the last set-point 1.5 s ago, timeout 1 s
+  ASSERT_EQ(out.lost.size(), 1u);
+  EXPECT_EQ(out.lost[0].name, "set-point");
+  EXPECT_EQ(out.action, "the last course is held");
+  EXPECT_TRUE(out.valid);
+  EXPECT_EQ(out.sentences.size(), 4u);
+
+  asv::AutopilotBridge inval = steering("invalidate");
+  inval.own({1000.0, 100.0}, asv::degToRad(90.0), 5.0, 0.0, 1.5, 1.5);
+  out = inval.tick(1.5, 1.5, noLatLon);
+  EXPECT_FALSE(out.valid);
+  ASSERT_EQ(out.sentences.size(), 3u);  // no HSC: it has no status to mark it invalid
+  EXPECT_EQ(out.sentences[0], "$ECAPB,V,V,0.054,R,N,V,V,90.0,T,ASV1,93.1,T,93.1,T,N*32");
+  EXPECT_DOUBLE_EQ(out.speed, 0.0);
+  // A set-point stamped 5 s ago is no sign of life.
+  inval.setpoint(asv::degToRad(90.0), 5.0, -3.5, 1.5, 1.5);
+  EXPECT_FALSE(inval.tick(1.6, 1.6, noLatLon).valid);
+  inval.setpoint(asv::degToRad(90.0), 5.0, 1.6, 1.6, 1.6);
+  EXPECT_TRUE(inval.tick(1.7, 1.7, noLatLon).valid);
+}
+
+TEST(AutopilotBridge, LostOdometryInvalidatesTheRouteButHoldsTheHeading) {
+  asv::AutopilotBridge b = steering("hold_course");
+  b.setpoint(asv::degToRad(90.0), 5.0, 1.6, 1.6, 1.6);
+  const auto out = b.tick(1.6, 1.6, noLatLon);  // odometry 1.1 s old
+  ASSERT_EQ(out.lost.size(), 1u);
+  EXPECT_EQ(out.lost[0].name, "odometry");
+  EXPECT_FALSE(out.valid);
+  ASSERT_EQ(out.sentences.size(), 4u);
+  EXPECT_EQ(out.sentences[0].substr(0, 11), "$ECAPB,V,V,");
+  EXPECT_EQ(out.sentences[3].substr(0, 17), "$ECHSC,90.0,T,,M*");  // the set-point course, not a guess
+}
+
+TEST(AutopilotBridge, ConfigNamesABadKey) {
+  asv::ParamMap p;
+  EXPECT_THROW(asv::AutopilotBridgeConfig::fromParams(p), std::invalid_argument);  // no origin
+  p.set("origin_lat_deg", 54.6);
+  p.set("origin_lon_deg", 18.8);
+  p.setList("sentences", {"APB", "GGA"});
+  try {
+    asv::AutopilotBridgeConfig::fromParams(p);
+    FAIL() << "GGA taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("GGA"), std::string::npos);
+  }
+}
