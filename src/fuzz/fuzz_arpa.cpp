@@ -1,8 +1,9 @@
-// libFuzzer target for the ARPA parsers ($--TTM, $--TLL, $--OSD) and the relative-to-true conversion.
+// libFuzzer target for the ARPA parsers ($--TTM, $--TLL, $--OSD) and the relative-to-true conversion,
+// and the own ship's navigation parsers (GGA, GNS, RMC, VTG, HDT, THS, HDG, ROT; codec/gnss.h).
 // Not built by CMake; scripts/fuzz_smoke.sh builds and runs it, or by hand from the repository root:
 //
 //   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -I src/include -I /usr/include/eigen3
-//   src/fuzz/fuzz_arpa.cpp src/lib/codec/nmea.cpp src/lib/codec/arpa.cpp -o fuzz_arpa
+//   src/fuzz/fuzz_arpa.cpp src/lib/codec/nmea.cpp src/lib/codec/arpa.cpp src/lib/codec/gnss.cpp -o fuzz_arpa
 //   ./fuzz_arpa src/fuzz/corpus/arpa -max_total_time=20
 //
 // Every line of the input goes through the NMEA framer with the checksum optional (so mutations of a
@@ -10,13 +11,16 @@
 // whatever its type. Invariants checked on a sentence a parser accepts: a field is either known (has_
 // flag set, value finite and in its documented range) or unknown (flag clear, value NaN), never a
 // number made from garbage; after toTrue() with a finite heading every known bearing/course is true
-// and in [0, 2 pi).
+// and in [0, 2 pi). A navigation sentence a parser accepts gives a position in range with a fix quality,
+// bearings in [0, 2 pi), speeds finite and >= 0, a finite turn rate.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 #include "asv_core/codec/arpa.h"
+#include "asv_core/codec/gnss.h"
 #include "asv_core/codec/nmea.h"
 
 namespace {
@@ -41,6 +45,34 @@ void checkAngle(bool known, double v) {
 
 void checkTime(bool known, double v) {
   checkField(known, v, 0.0, 86400.0 + 1.0);
+}
+
+void checkBearing(std::optional<double> v) {
+  if (v && !(*v >= 0.0 && *v < kTwoPi))
+    __builtin_trap();
+}
+
+void checkNavigation(const asv::nmea::Sentence& s) {
+  namespace g = asv::gnss;
+  g::Fix f;
+  g::Motion m;
+  std::optional<double> variation;
+  double v = 0.0;
+  for (const g::Error e : {g::parseGga(s, f), g::parseGns(s, f), g::parseRmc(s, f, m, variation)})
+    if (e == g::Error::kNone &&
+        (!(std::fabs(f.lat_deg) <= 90.0 && std::fabs(f.lon_deg) <= 180.0) || f.quality == g::Quality::kNone ||
+         (f.hdop && !(*f.hdop > 0.0 && std::isfinite(*f.hdop)))))
+      __builtin_trap();
+  if (g::parseVtg(s, m) == g::Error::kNone || g::parseRmc(s, f, m, variation) == g::Error::kNone) {
+    checkBearing(m.course);
+    if (m.speed && !(*m.speed >= 0.0 && std::isfinite(*m.speed)))
+      __builtin_trap();
+  }
+  for (const g::Error e : {g::parseHdt(s, v), g::parseThs(s, v), g::parseHdg(s, 0.1, v)})
+    if (e == g::Error::kNone)
+      checkBearing(v);
+  if (g::parseRot(s, v) == g::Error::kNone && !std::isfinite(v))
+    __builtin_trap();
 }
 
 void checkTtm(const asv::arpa::TrackedTarget& t, const asv::arpa::ArpaConfig& c) {
@@ -84,6 +116,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       pos += s.end;
 
+      checkNavigation(s);
       asv::arpa::OwnShipData o;
       if (asv::arpa::parseOsd(s, o, ac) == asv::arpa::Error::kNone) {
         if (o.units != 'K' && o.units != 'N' && o.units != 'S')

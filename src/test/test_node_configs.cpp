@@ -7,10 +7,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include "asv_core/eval/evaluator_node_config.h"
+#include "asv_core/planning/autopilot_bridge.h"
 #include "asv_core/planning/planner_node_config.h"
 #include "asv_core/risk/risk_node_config.h"
 #include "asv_core/sim/sim_node_config.h"
 #include "asv_core/tracking/ingestion_config.h"
+#include "asv_core/tracking/own_ship.h"
 #include "asv_core/tracking/tracker_node_config.h"
 
 using asv::ParamMap;
@@ -137,4 +139,20 @@ TEST(NodeConfigs, TypedValuesAreRefusedWithTheParameterName) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("'/sim/rate' has the wrong type"), std::string::npos) << e.what();
   }
+}
+
+TEST(NodeConfigs, OwnShipAndAutopilotBridgeYamlAreTheCodesKeySets) {
+  ParamMap own = loadYaml("asv_risk/config/own_ship_node.yaml");
+  const asv::OwnShipConfig o = asv::OwnShipConfig::fromParams(own);
+  EXPECT_EQ(unknown(own, {"input/"}), "");  // input/ is the node's I/O glue
+  const asv::OwnShipConfig od;
+  EXPECT_DOUBLE_EQ(o.cog_heading_sigma, od.cog_heading_sigma);
+  EXPECT_DOUBLE_EQ(o.watch.input_timeout, od.watch.input_timeout);
+  EXPECT_FALSE(o.variation);  // variation_deg is commented out
+  ParamMap bridge = loadYaml("asv_planning/config/autopilot_bridge.yaml");
+  const asv::AutopilotBridgeConfig b = asv::AutopilotBridgeConfig::fromParams(bridge);
+  EXPECT_EQ(unknown(bridge, {"output/", "publish_twist"}), "");  // the node's I/O glue
+  EXPECT_FALSE(b.armed_at_start);
+  EXPECT_EQ(b.safe_action, "hold_course");
+  EXPECT_DOUBLE_EQ(b.watch.input_timeout, asv::AutopilotBridgeConfig().watch.input_timeout);
 }

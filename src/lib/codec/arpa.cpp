@@ -12,14 +12,8 @@ namespace {
 
 constexpr double kMetresPerStatuteMile = 1609.344;
 
-// First non-space character of a one-letter field, '\0' when empty.
-char letter(std::string_view f) {
-  f = nmea::trim(f);
-  return f.empty() ? '\0' : f[0];
-}
-
 Reference reference(std::string_view f) {
-  switch (letter(f)) {
+  switch (nmea::letter(f)) {
     case 'T':
       return Reference::kTrue;
     case 'R':
@@ -30,7 +24,7 @@ Reference reference(std::string_view f) {
 }
 
 TargetStatus status(std::string_view f) {
-  switch (letter(f)) {
+  switch (nmea::letter(f)) {
     case 'L':
       return TargetStatus::kLost;
     case 'Q':
@@ -91,43 +85,13 @@ bool scaled(std::string_view f, double factor, double max, double& out) {
 
 // Unit letter of a sentence: empty means knots/nautical miles (what every marine radar defaults to).
 Error unitOf(std::string_view f, char& unit) {
-  char u = letter(f);
+  char u = nmea::letter(f);
   if (u == '\0')
     u = 'N';
   if (speedFactor(u) == 0.0)
     return Error::kBadUnits;
   unit = u;
   return Error::kNone;
-}
-
-// ddmm.mmm / dddmm.mmm with hemisphere -> degrees.
-bool latLon(std::string_view value, std::string_view hemi, bool is_lat, double& out) {
-  double v;
-  if (!nmea::parseDouble(value, v) || !std::isfinite(v) || v < 0.0)  // "nan"/"inf" parse: reject them
-    return false;
-  const double deg = std::floor(v / 100.0);
-  const double min = v - deg * 100.0;
-  if (min >= 60.0)
-    return false;
-  double d = deg + min / 60.0;
-  const char h = letter(hemi);
-  if (is_lat) {
-    if (h == 'S')
-      d = -d;
-    else if (h != 'N')
-      return false;
-    if (std::fabs(d) > 90.0)
-      return false;
-  } else {
-    if (h == 'W')
-      d = -d;
-    else if (h != 'E')
-      return false;
-    if (std::fabs(d) > 180.0)
-      return false;
-  }
-  out = d;
-  return true;
 }
 
 std::string name(std::string_view f) {
@@ -216,9 +180,9 @@ Error parseTtm(const nmea::Sentence& s, TrackedTarget& t, const ArpaConfig& conf
   }
   t.name = name(s.field(11));
   t.status = status(s.field(12));
-  t.reference_target = letter(s.field(13)) == 'R';
+  t.reference_target = nmea::letter(s.field(13)) == 'R';
   t.has_time = utcSeconds(s.field(14), t.utc_seconds);
-  switch (letter(s.field(15))) {
+  switch (nmea::letter(s.field(15))) {
     case 'A':
       t.acquisition = Acquisition::kAutomatic;
       break;
@@ -244,7 +208,7 @@ Error parseTll(const nmea::Sentence& s, TargetPosition& t, const ArpaConfig&) {
   if (Error e = targetNumber(s.field(1), t.number); e != Error::kNone)
     return e;
   double lat, lon;
-  if (latLon(s.field(2), s.field(3), true, lat) && latLon(s.field(4), s.field(5), false, lon)) {
+  if (nmea::parseLatLon(s.field(2), s.field(3), true, lat) && nmea::parseLatLon(s.field(4), s.field(5), false, lon)) {
     t.has_position = true;
     t.lat_deg = lat;
     t.lon_deg = lon;
@@ -252,7 +216,7 @@ Error parseTll(const nmea::Sentence& s, TargetPosition& t, const ArpaConfig&) {
   t.name = name(s.field(6));
   t.has_time = utcSeconds(s.field(7), t.utc_seconds);
   t.status = status(s.field(8));
-  t.reference_target = letter(s.field(9)) == 'R';
+  t.reference_target = nmea::letter(s.field(9)) == 'R';
   return Error::kNone;
 }
 
@@ -266,11 +230,11 @@ Error parseOsd(const nmea::Sentence& s, OwnShipData& o, const ArpaConfig& config
     return e;
   const double speed_k = speedFactor(o.units);
   o.has_heading = angle(s.field(1), o.heading);
-  o.heading_valid = letter(s.field(2)) == 'A';
+  o.heading_valid = nmea::letter(s.field(2)) == 'A';
   o.has_course = angle(s.field(3), o.course);
-  o.course_ref = letter(s.field(4));
+  o.course_ref = nmea::letter(s.field(4));
   o.has_speed = scaled(s.field(5), speed_k, config.max_speed, o.speed);
-  o.speed_ref = letter(s.field(6));
+  o.speed_ref = nmea::letter(s.field(6));
   o.has_set = angle(s.field(7), o.set);
   o.has_drift = scaled(s.field(8), speed_k, config.max_speed, o.drift);
   return Error::kNone;

@@ -1,6 +1,7 @@
 #include "asv_core/codec/nmea.h"
 
 #include <charconv>
+#include <cmath>
 #include <stdexcept>
 
 namespace asv {
@@ -303,6 +304,40 @@ bool parseInt(std::string_view field, long& value) {
   if (r.ec != std::errc() || r.ptr != field.data() + field.size())
     return false;
   value = v;
+  return true;
+}
+
+char letter(std::string_view field) {
+  field = trim(field);
+  return field.empty() ? '\0' : field[0];
+}
+
+bool parseLatLon(std::string_view value, std::string_view hemi, bool is_lat, double& out) {
+  double v;
+  if (!parseDouble(value, v) || !std::isfinite(v) || v < 0.0)  // "nan"/"inf" parse: reject them
+    return false;
+  const double deg = std::floor(v / 100.0);
+  const double min = v - deg * 100.0;
+  if (min >= 60.0)
+    return false;
+  double d = deg + min / 60.0;
+  const char h = letter(hemi);
+  if (is_lat) {
+    if (h == 'S')
+      d = -d;
+    else if (h != 'N')
+      return false;
+    if (std::fabs(d) > 90.0)
+      return false;
+  } else {
+    if (h == 'W')
+      d = -d;
+    else if (h != 'E')
+      return false;
+    if (std::fabs(d) > 180.0)
+      return false;
+  }
+  out = d;
   return true;
 }
 

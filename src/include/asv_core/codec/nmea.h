@@ -101,6 +101,13 @@ std::uint8_t checksum(std::string_view data);
 bool parseDouble(std::string_view field, double& value);
 bool parseInt(std::string_view field, long& value);
 
+// "ddmm.mmm" (latitude, is_lat) or "dddmm.mmm" with its hemisphere field (N/S, E/W) -> signed degrees;
+// false for an empty, malformed or out-of-range value (minutes >= 60, beyond 90/180 deg).
+bool parseLatLon(std::string_view value, std::string_view hemisphere, bool is_lat, double& degrees);
+
+// First non-space character of a one-letter field (a status, a unit, a hemisphere); '\0' when empty.
+char letter(std::string_view field);
+
 // Trims ASCII spaces (and tabs) on both ends.
 std::string_view trim(std::string_view s);
 
