@@ -84,6 +84,7 @@ DssaRosAgent::DssaRosAgent(const ros::NodeHandle& nh, const ros::NodeHandle& pnh
   intention_sub_ = nh_.subscribe(ex_.topic, 200, &DssaRosAgent::intentionCallback, this, hints);
   intention_pub_ = nh_.advertise<asv_msgs::Intention>(ex_.topic, 200);
   cmd_pub_ = nh_.advertise<asv_msgs::CourseSpeedSetpoint>("cmd", 5);
+  resend_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { resendCommand(); });
   plan_pub_ = nh_.advertise<asv_msgs::Plan>("plan", 5, true);
   path_pub_ = nh_.advertise<nav_msgs::Path>("path", 5, true);
   updater_.setHardwareID(opt_.ship);
@@ -340,6 +341,14 @@ void DssaRosAgent::publishIntention(const asv::DssaIntention& in, uint32_t phase
   ++sent_;
 }
 
+void DssaRosAgent::resendCommand() {
+  std::lock_guard<std::mutex> lock(cmd_mu_);
+  if (!last_cmd_)
+    return;
+  last_cmd_->header.stamp = ros::Time::now();
+  cmd_pub_.publish(*last_cmd_);
+}
+
 void DssaRosAgent::publishCommand(double course, double speed, double search_time, int rounds,
                                   bool quiescent) {
   if (!std::isfinite(course) || !std::isfinite(speed))
@@ -353,6 +362,10 @@ void DssaRosAgent::publishCommand(double course, double speed, double search_tim
   sp.course = course_sp_;
   sp.speed = speed_sp_;
   cmd_pub_.publish(sp);
+  {
+    std::lock_guard<std::mutex> lock(cmd_mu_);
+    last_cmd_ = sp;
+  }
 
   // The intention as a plan: where the ship will be after one TimeWindow on it.
   asv_msgs::Plan plan;

@@ -56,6 +56,24 @@ asv::ShipState trackState(const asv_msgs::Target& t) {
   return s;
 }
 
+using AssessedTargets = std::map<std::string, asv::PlannerTarget>;
+
+// The risk fields of each assessed target, by id (selectPlannerTargets adds the tracks).
+AssessedTargets assessedBy(const asv_msgs::RiskAssessment& risk) {
+  AssessedTargets assessed;
+  for (const auto& r : risk.targets) {
+    asv::PlannerTarget& pt = assessed[r.target_id];
+    pt.risk = static_cast<asv::RiskLevel>(r.risk_level);
+    pt.compliant = r.compliant;
+    pt.encounter = static_cast<asv::Encounter>(r.encounter);
+    pt.role = static_cast<asv::OwnRole>(r.own_role);
+    pt.cri = r.cri;
+    pt.tcpa = r.tcpa;
+    pt.dcpa = r.dcpa;
+  }
+  return assessed;
+}
+
 }  // namespace
 
 PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh)
@@ -237,26 +255,17 @@ std::vector<asv::PlannerTarget> PlannerNode::lastPicture(const ros::Time& now) c
   std::vector<asv::ShipState> tracks;
   for (const auto& t : targets_->targets)
     tracks.push_back(trackState(t));
-  // Every last track counts, assessed or not: in degraded operation a ship is a danger until shown not.
-  return asv::PlanFollower::deadReckon(asv::selectPlannerTargets(params_.ship, tracks, {}, false),
-                                       targets_->header.stamp.toSec(), now.toSec());
+  // Every last track counts, assessed or not (with its last assessment, however old): in degraded
+  // operation a ship is a danger until shown not.
+  return asv::PlanFollower::deadReckon(
+      asv::selectPlannerTargets(params_.ship, tracks, risk_ ? assessedBy(*risk_) : AssessedTargets(), false),
+      targets_->header.stamp.toSec(), now.toSec());
 }
 
 std::vector<asv::PlannerTarget> PlannerNode::withRisk(const std::vector<asv::ShipState>& tracks,
                                                       bool risk_fresh) const {
   const ros::Time now = ros::Time::now();
-  std::map<std::string, asv::PlannerTarget> assessed;
-  if (risk_fresh)
-    for (const auto& r : risk_->targets) {
-      asv::PlannerTarget& pt = assessed[r.target_id];
-      pt.risk = static_cast<asv::RiskLevel>(r.risk_level);
-      pt.compliant = r.compliant;
-      pt.encounter = static_cast<asv::Encounter>(r.encounter);
-      pt.role = static_cast<asv::OwnRole>(r.own_role);
-      pt.cri = r.cri;
-      pt.tcpa = r.tcpa;
-      pt.dcpa = r.dcpa;
-    }
+  const AssessedTargets assessed = risk_fresh ? assessedBy(*risk_) : AssessedTargets();
   const bool risk_alive =
       !asv::riskBlindPlanning(risk_fresh, now.toSec(), first_input_, params_.stale_after);
   return asv::selectPlannerTargets(params_.ship, tracks, assessed, risk_alive);

@@ -215,6 +215,8 @@ void AisNode::publish() {
 }
 
 void AisNode::heartbeat() {
+  if (!input_ || !input_->linkUp())
+    return;  // a link that is down is silence the tracker must see
   if (auto arr = heartbeatArray(ros::Time::now(), last_publish_, params_.heartbeat_period, params_.frame_id))
     lockstep_.publish(targets_pub_, *arr);
 }

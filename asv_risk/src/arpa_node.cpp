@@ -242,6 +242,8 @@ void ArpaNode::publish() {
 }
 
 void ArpaNode::heartbeat() {
+  if (!input_ || !input_->linkUp())
+    return;  // a link that is down is silence the tracker must see
   if (auto arr = heartbeatArray(ros::Time::now(), last_publish_, params_.heartbeat_period, params_.frame_id))
     lockstep_.publish(targets_pub_, *arr);
 }

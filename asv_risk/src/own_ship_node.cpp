@@ -102,10 +102,11 @@ void OwnShipNode::publish() {
   if (now.isZero())
     return;
   const std::vector<asv::StaleInput> lost = estimator_.stale(now.toSec(), asv_ros::wallNow());
-  alarm_.update(lost,
-                "no odometry while the position or heading is unknown; dead reckoning from the last fix");
+  const bool no_fix = !lost.empty() && lost.front().name == "fix";
+  alarm_.update(lost, no_fix ? "no odometry: the position is unknown"
+                             : "heading from the course over ground (or the last heading)");
   const std::optional<asv::OwnShipState> s = estimator_.state(now.toSec());
-  if (!s || (!lost.empty() && lost.front().name == "fix"))
+  if (!s || no_fix)
     return;  // a stale fix is not published as the ship's position: the stages below see it stop
   const std::string child = params_.ship + "/base_link";
   const nav_msgs::Odometry o = toOdometry(*s, params_.frame_id, child, now);

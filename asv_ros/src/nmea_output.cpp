@@ -63,9 +63,12 @@ NmeaOutput::NmeaOutput(const NmeaOutputConfig& config) : cfg_(config) {
   if (cfg_.type == "udp") {
     fd_ = ::socket(AF_INET, SOCK_DGRAM, 0);
   } else if (cfg_.type == "serial") {
+    // Opened without blocking on the modem lines, then written blocking: a sentence goes out whole or
+    // not at all (a partial one would run into the next on the wire).
     fd_ = ::open(cfg_.serial_device.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK);
     termios tio{};
-    bool ok = fd_ >= 0 && ::tcgetattr(fd_, &tio) == 0;
+    bool ok = fd_ >= 0 && ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK) == 0 &&
+              ::tcgetattr(fd_, &tio) == 0;
     if (ok) {
       ::cfmakeraw(&tio);
       tio.c_cflag |= CLOCAL;
@@ -100,7 +103,16 @@ bool NmeaOutput::send(const std::string& sentence) {
     ::inet_pton(AF_INET, cfg_.udp_host.c_str(), &addr.sin_addr);  // checked in fromParams
     n = ::sendto(fd_, line.data(), line.size(), 0, reinterpret_cast<sockaddr*>(&addr), sizeof addr);
   } else {
-    n = ::write(fd_, line.data(), line.size());
+    std::size_t done = 0;
+    while (done < line.size()) {
+      const ssize_t w = ::write(fd_, line.data() + done, line.size() - done);
+      if (w < 0 && errno == EINTR)
+        continue;
+      if (w <= 0)
+        break;
+      done += static_cast<std::size_t>(w);
+    }
+    n = static_cast<ssize_t>(done);
   }
   const bool ok = n == static_cast<ssize_t>(line.size());
   ++(ok ? sent_ : failed_);

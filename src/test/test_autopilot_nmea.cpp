@@ -154,6 +154,17 @@ TEST(AutopilotBridge, LostSetpointsHoldTheCourseOrInvalidate) {
   EXPECT_TRUE(inval.tick(1.7, 1.7, noLatLon).valid);
 }
 
+TEST(AutopilotBridge, ReArmingStartsANewLegFromWhereTheShipIs) {
+  asv::AutopilotBridge b = steering("hold_course");
+  b.arm(false);
+  // Steered by hand 2 km north meanwhile, then armed again on the same set-point course.
+  b.own({1000.0, 2000.0}, asv::degToRad(90.0), 5.0, 0.0, 0.6, 0.6);
+  b.setpoint(asv::degToRad(90.0), 5.0, 0.6, 0.6, 0.6);
+  b.arm(true);
+  const auto out = b.tick(0.7, 0.7, noLatLon);
+  EXPECT_EQ(out.sentences[0].substr(0, 17), "$ECAPB,A,A,0.000,");  // no 2 km back to the old line
+}
+
 TEST(AutopilotBridge, LostOdometryInvalidatesTheRouteButHoldsTheHeading) {
   asv::AutopilotBridge b = steering("hold_course");
   b.setpoint(asv::degToRad(90.0), 5.0, 1.6, 1.6, 1.6);

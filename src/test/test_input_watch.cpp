@@ -78,6 +78,19 @@ TEST(InputWatch, ABusyNodeReadsItsQueueBeforeCallingAnInputStale) {
   EXPECT_EQ(w.stale(6.6, 6.6).size(), 2u);  // still nothing 1.6 s after the node was free again
 }
 
+TEST(InputWatch, BusyDoesNotExtendTheStartupGrace) {
+  asv::InputWatch w = watch(0.0, 10.0);
+  w.start(0.0, 0.0);
+  // A node busy every 2 s: an input that never came is still stale once the grace and its timeout
+  // are over (odom: 10 + 1.0 s), and 1.0 s past the last busy spell.
+  for (double t = 2.0; t <= 10.0; t += 2.0)
+    w.busy(t, t);
+  EXPECT_TRUE(w.stale(10.5, 10.5).empty());
+  const auto s = w.stale(11.1, 11.1);
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_EQ(s[0].name, "odom");
+}
+
 TEST(InputWatch, RefusesBadSettingsAndUnknownInputs) {
   asv::InputWatch w;
   EXPECT_THROW(w.add("x", 0.0), std::invalid_argument);

@@ -195,4 +195,9 @@ TEST(OwnShip, StaleFixIsAnAlarmAndHerAisReportsAreTheFallback) {
   lost = e.stale(3.0, 3.0);
   ASSERT_EQ(lost.size(), 1u);  // the fix is alive again (from AIS); the heading sensor is not
   EXPECT_EQ(lost[0].name, "heading");
+  // Her reports stand in for ais_timeout (30 s), then the fix is lost again.
+  EXPECT_TRUE(e.state(32.9));
+  EXPECT_EQ(e.stale(32.9, 32.9).size(), 1u);
+  EXPECT_FALSE(e.state(33.1));
+  EXPECT_EQ(e.stale(33.1, 33.1)[0].name, "fix");
 }

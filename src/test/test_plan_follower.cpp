@@ -450,6 +450,12 @@ TEST(PlanFollower, DegradedDropsAPlanThatNoLongerPassesTheLastPicture) {
   const asv::Plan& p = f.degrade(1.0, {westbound({5000.0, 5000.0})}, "tracks: none for 1.6 s");
   EXPECT_EQ(p.status, asv::PlanStatus::Fallback);
   EXPECT_DOUBLE_EQ(p.speed_setpoint, 3.0);
+  // Rechecked at every call: the last known ship (risk unknown) now 600 m off, inside extremis_range
+  // (926 m): hard to starboard from the course held (000 -> 090) at full speed.
+  const asv::Plan& x = f.degrade(2.0, {westbound({600.0, 0.0})}, "tracks: none for 2.6 s");
+  EXPECT_NEAR(x.course_setpoint, asv::kPi / 2, 1e-12);
+  EXPECT_DOUBLE_EQ(x.speed_setpoint, 6.0);
+  EXPECT_NE(x.message.find("in extremis with ts1"), std::string::npos) << x.message;
   // The picture comes back: a plan at once, whatever min_replan_interval says.
   f.recover();
   EXPECT_FALSE(f.degraded());

@@ -50,6 +50,7 @@
 #include <utility>
 
 #include <asv_core/planning/dssa/dssa.h>
+#include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Intention.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nav_msgs/Odometry.h>
@@ -129,6 +130,9 @@ private:
   void forgetStale(double now);
   void publishIntention(const asv::DssaIntention& in, uint32_t phase, bool done, bool leaving);
   void publishCommand(double course, double speed, double search_time, int rounds, bool quiescent);
+  // The last set-point again (1 Hz, spinner thread): a control step lasts time_step (10 s), and an
+  // autopilot's watchdog would take a silence that long for a planner that has stopped.
+  void resendCommand();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
 
   ros::CallbackQueue queue_;
@@ -154,6 +158,9 @@ private:
   int last_rounds_ = 0, max_rounds_seen_ = 0, neighbours_ = 0;
   double last_search_time_ = 0.0, max_search_time_ = 0.0;
   double course_sp_ = 0.0, speed_sp_ = 0.0;
+  std::mutex cmd_mu_;                // the last set-point sent, for resendCommand()
+  std::optional<asv_msgs::CourseSpeedSetpoint> last_cmd_;  // under cmd_mu_
+  ros::Timer resend_timer_;
   double own_course_ = 0.0;  // [rad] course over ground when the search phase began
   bool left_ = false;
 

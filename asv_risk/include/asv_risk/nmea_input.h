@@ -118,6 +118,9 @@ public:
 
   const std::string& source() const { return source_; }  // e.g. udp://127.0.0.1:10110
   NmeaInputStats stats() const;
+  // The source is there: a topic input always (its publisher is the ROS graph's business), a device while
+  // open or connected (a file until its end). The ingestion nodes send their heartbeat only then.
+  bool linkUp() const { return params_.type == "topic" || stats().connected; }
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) const;
 
 private:

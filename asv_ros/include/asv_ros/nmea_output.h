@@ -36,6 +36,8 @@ public:
   NmeaOutput& operator=(const NmeaOutput&) = delete;
 
   bool send(const std::string& sentence);  // false (and counted) when the write failed
+  // Bytes per second the line carries (8N1: baud / 10); unlimited for UDP and none.
+  double capacity() const { return cfg_.type == "serial" ? cfg_.serial_baud / 10.0 : 1e12; }
   uint64_t sent() const { return sent_; }
   uint64_t failed() const { return failed_; }
   std::string describe() const;  // "udp 127.0.0.1:10110", "serial /dev/ttyUSB0 at 4800 Bd", "none"

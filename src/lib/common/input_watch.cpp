@@ -68,11 +68,13 @@ std::vector<StaleInput> InputWatch::stale(double now, double wall) {
   std::vector<StaleInput> out;
   for (const std::string& name : order_) {
     const Input& in = inputs_.at(name);
-    // Never received: measured from the start, with the start-up grace.
-    const double grace = in.seen ? 0.0 : cfg_.startup_grace;
-    const double since = std::max(in.seen ? in.last : start_, busy_);
-    const double since_wall = std::max(in.seen ? in.last_wall : start_wall_, busy_wall_);
-    if (now - since <= in.timeout + grace || wall - since_wall <= cfg_.wall_floor + grace)
+    // Since the last message, or since the start with the start-up grace; either way at least a
+    // timeout since the node was last busy (it has not read its queue yet). The grace does not move
+    // with `busy`: a node that replans often still reports an input that never came.
+    const double last = in.seen ? in.last : start_ + cfg_.startup_grace;
+    const double last_wall = in.seen ? in.last_wall : start_wall_ + cfg_.startup_grace;
+    if (now - std::max(last, busy_) <= in.timeout ||
+        wall - std::max(last_wall, busy_wall_) <= cfg_.wall_floor)
       continue;
     char line[256];
     if (in.seen)

@@ -70,6 +70,12 @@ AutopilotBridge::AutopilotBridge(const AutopilotBridgeConfig& config)
   watch_.add(kOwn);
 }
 
+void AutopilotBridge::arm(bool armed) {
+  if (armed && !armed_)
+    leg_.reset();
+  armed_ = armed;
+}
+
 void AutopilotBridge::setpoint(double course, double speed, double stamp, double now, double wall) {
   if (!allFinite({course, speed}))
     return;
@@ -100,6 +106,10 @@ AutopilotBridge::Output AutopilotBridge::tick(
   bool setpoint_lost = false, own_lost = !position_.has_value();
   for (const StaleInput& s : out.lost)
     (s.name == kSetpoint ? setpoint_lost : own_lost) = true;
+  // Back from a loss: the old leg's line may be far astern; steer a new one from here.
+  if (was_lost_ && out.lost.empty())
+    leg_.reset();
+  was_lost_ = !out.lost.empty();
   if (!armed_ || !course_)
     return out;
   const bool invalidate = setpoint_lost && cfg_.safe_action == "invalidate";

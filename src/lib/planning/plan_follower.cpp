@@ -239,17 +239,18 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   return pr;
 }
 
-Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std::string& why) const {
+Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std::string& why,
+                            std::optional<double> hold_course) const {
   Plan f;
   f.status = PlanStatus::Fallback;
-  f.course_setpoint = own_->course;
+  f.course_setpoint = hold_course.value_or(own_->course);
   f.speed_setpoint = cfg_.cruise_speed * cfg_.fallback_speed_factor;
   f.message = "fallback (" + why + "): hold course, slow to " + std::to_string(cfg_.fallback_speed_factor) +
               " of speed";
   for (const auto& t : targets)
     if (t.risk == RiskLevel::Urgent && (t.state.position - own_->position).norm() < cfg_.extremis_range) {
       // In extremis (Rule 17(b), Rule 2(b)): hard to starboard at full speed.
-      f.course_setpoint = wrapTwoPi(own_->course + kPi / 2);
+      f.course_setpoint = wrapTwoPi(f.course_setpoint + kPi / 2);
       f.speed_setpoint = cfg_.cruise_speed;
       f.message = "fallback (" + why + "): in extremis with " + t.state.id + ", hard starboard";
       break;
@@ -388,12 +389,20 @@ const Plan& PlanFollower::degrade(double now, const std::vector<PlannerTarget>& 
                     !landAhead();
   if (keep)
     return plan_;
-  // Holding course is renewed only when it began elsewhere: the course held is the one the ship had
-  // when the picture went, not wherever she has drifted since.
-  if (have_plan_ && plan_.status == PlanStatus::Fallback && plan_.message.rfind("degraded", 0) == 0)
-    return plan_;
-  Plan f = fallback(last_known, "no picture: " + cause);
+  // The course held is the one she had when the plan was given up, not wherever she drifts since.
+  // Every last known ship inside extremis_range counts as urgent (her risk cannot be assessed), so the
+  // fallback's hard turn and its stop short of land are checked again at every call.
+  const bool holding = have_plan_ && plan_.status == PlanStatus::Fallback && plan_.message.rfind("degraded", 0) == 0;
+  if (!holding)
+    degraded_course_ = own_->course;
+  std::vector<PlannerTarget> marked = last_known;
+  for (PlannerTarget& t : marked)
+    if ((t.state.position - own_->position).norm() < cfg_.extremis_range)
+      t.risk = RiskLevel::Urgent;
+  Plan f = fallback(marked, "no picture: " + cause, degraded_course_);
   f.message = "degraded: " + f.message;
+  if (holding && f.course_setpoint == plan_.course_setpoint && f.speed_setpoint == plan_.speed_setpoint)
+    return plan_;  // the same action: the plan in force (and its first message) stays
   return acceptPlan(std::move(f), now, {}, "degraded");
 }
 

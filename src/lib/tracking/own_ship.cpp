@@ -42,6 +42,8 @@ void OwnShipConfig::validate() const {
     throw std::invalid_argument("ship must not be empty");
   if (own_mmsi > 999999999u)
     throw std::invalid_argument("own_mmsi must have at most 9 digits");
+  if (!(ais_timeout > 0.0))
+    throw std::invalid_argument("ais_timeout must be > 0 s");
   if (!(max_speed > 0.0) || jump_accept < 1)
     throw std::invalid_argument("max_speed must be > 0 m/s and jump_accept >= 1");
   if (!(min_speed_for_cog >= 0.0) || !(heading_sigma > 0.0) || !(cog_heading_sigma > 0.0))
@@ -57,6 +59,7 @@ OwnShipConfig OwnShipConfig::fromParams(const ParamMap& p) {
   c.readShared(p);
   c.ship = p.getString("ship", c.ship);
   c.own_mmsi = static_cast<std::uint32_t>(p.getSize("own_mmsi", c.own_mmsi));
+  c.ais_timeout = p.getDouble("ais_timeout", c.ais_timeout);
   c.max_speed = p.getDouble("max_speed", c.max_speed);
   c.jump_accept = p.getInt("jump_accept", c.jump_accept);
   c.min_speed_for_cog = p.getDouble("min_speed_for_cog", c.min_speed_for_cog);
@@ -176,13 +179,13 @@ void OwnShipEstimator::aisReport(double lat_deg, double lon_deg, bool accurate, 
   s.position_source = "AIS";
   s.fix_time = t;
   ais_ = s;
-  if (!fix_ || t - fix_->fix_time > cfg_.watch.input_timeout)
-    watch_.received(kFix, t, wall);  // the fallback keeps the position alive
+  (void)wall;  // her reports keep the position alive for ais_timeout (stale()), not the GNSS watch
 }
 
 std::optional<OwnShipState> OwnShipEstimator::state(double t) const {
   const bool gnss_fresh = fix_ && t - fix_->fix_time <= cfg_.watch.input_timeout;
-  const bool use_ais = !gnss_fresh && ais_ && (!fix_ || ais_->fix_time > fix_->fix_time);
+  const bool use_ais = !gnss_fresh && ais_ && t - ais_->fix_time <= cfg_.ais_timeout &&
+                       (!fix_ || ais_->fix_time > fix_->fix_time);
   if (!fix_ && !ais_)
     return std::nullopt;
   OwnShipState s = use_ais ? *ais_ : *fix_;
@@ -217,6 +220,9 @@ std::vector<StaleInput> OwnShipEstimator::stale(double t, double wall) {
   for (StaleInput& s : watch_.stale(t, wall)) {
     // A ship without a heading sensor, making way, steers by her course over ground: not a fault.
     if (s.name == kHeading && !watch_.everReceived(kHeading) && state(t))
+      continue;
+    // No GNSS fix, but her AIS transponder reports: the position stands on it, at its own pace.
+    if (s.name == kFix && ais_ && t - ais_->fix_time <= cfg_.ais_timeout)
       continue;
     out.push_back(std::move(s));
   }

@@ -5,8 +5,8 @@
 //    operator left it;
 //  - the set-points stop (planner down, or stamps older than watch/input_timeout): an alarm, and the
 //    configured safe action: hold_course (keep sending the last course, so the autopilot holds it) or
-//    invalidate (every sentence with status V / mode N: an autopilot in track mode drops out of it and
-//    alarms at its console);
+//    invalidate (APB, RMB and XTE with status V / mode N: an autopilot in track mode drops out of it and
+//    alarms at its console; HSC, which has no status field, is no longer sent);
 //  - the own position stops (odometry stale): the route sentences cannot be computed: status V on APB,
 //    RMB and XTE, HSC keeps the last course;
 // and a twist (forward speed and yaw rate towards the heading to steer) for a vehicle driven by
@@ -58,7 +58,8 @@ public:
   void setpoint(double course, double speed, double stamp, double now, double wall);
   void own(const Eigen::Vector2d& position, double course_over_ground, double speed, double heading,
            double now, double wall);
-  void arm(bool armed) { armed_ = armed; }
+  // Arming starts a new leg from where the ship is (she may have been steered by hand meanwhile).
+  void arm(bool armed);
   bool armed() const { return armed_; }
 
   struct Output {
@@ -78,6 +79,7 @@ private:
   InputWatch watch_;
   autopilot::SetpointLeg leg_;
   bool armed_ = false;
+  bool was_lost_ = false;  // an input was lost at the last tick: a new leg when it is back
   std::optional<double> course_, speed_;
   std::optional<Eigen::Vector2d> position_;
   double cog_ = 0.0, sog_ = 0.0, heading_ = 0.0;

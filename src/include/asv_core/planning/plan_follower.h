@@ -110,7 +110,9 @@ public:
   bool replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why);
   // Targets of a picture taken at `stamp`, moved on to `now` at their course and speed.
   static std::vector<PlannerTarget> deadReckon(std::vector<PlannerTarget> targets, double stamp, double now);
-  Plan fallback(const std::vector<PlannerTarget>& targets, const std::string& why) const;
+  // hold_course: the course to hold (default: the present course over ground).
+  Plan fallback(const std::vector<PlannerTarget>& targets, const std::string& why,
+                std::optional<double> hold_course = std::nullopt) const;
   // Stores a plan made at `now` (NoSolution becomes the fallback) and the risk levels it saw.
   // Returns the plan in force.
   const Plan& acceptPlan(Plan plan, double now, const std::vector<PlannerTarget>& targets,
@@ -119,9 +121,11 @@ public:
   // tracks gone stale, a stage upstream down): absence of data is not absence of danger, so no new plan
   // is made. The plan in force is kept while it is Ok, younger than degraded_plan_hold since the loss
   // began, and still passes the last known targets (`last_known`, dead-reckoned to now) by
-  // plan_clearance and land by the required clearance; otherwise the ship holds her present course at
-  // fallback_speed_factor of the cruise speed (the fallback, with its extremis turn and its stop short of
-  // land). `cause` is shown in the plan's message. Returns the plan in force.
+  // plan_clearance and land by the required clearance; otherwise the ship holds the course she had when
+  // the plan was given up, at fallback_speed_factor of the cruise speed: the fallback, checked again at
+  // every call, with its stop short of land and its hard turn to starboard for any last known ship
+  // inside extremis_range (counted urgent: her risk cannot be assessed). `cause` is shown in the plan's
+  // message. Returns the plan in force.
   const Plan& degrade(double now, const std::vector<PlannerTarget>& last_known, const std::string& cause);
   // The data is back: the next replanNeeded() asks for a plan at once ("picture back").
   void recover();
@@ -156,6 +160,7 @@ private:
   double last_plan_time_ = -1e300;
   double course_sp_ = 0.0, speed_sp_ = 0.0;
   double degraded_since_ = -1.0;  // when degraded operation began (< 0: not degraded)
+  double degraded_course_ = 0.0;  // the course held in degraded operation
   bool recovered_ = false;        // the picture came back: replan at once
   uint64_t replans_ = 0, fallbacks_ = 0;
 };

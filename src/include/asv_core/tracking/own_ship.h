@@ -4,8 +4,9 @@
 //
 // Rules:
 //  - position: the latest GNSS fix, dead-reckoned to the time asked at its course and speed; her AIS
-//    report only while no GNSS fix came for watch/input_timeout. Its 1-sigma is HDOP (1.5 when the
-//    sentence has none) times the fix type's range error: our choice, from typical receiver figures
+//    report (if younger than ais_timeout) only while no GNSS fix came for watch/input_timeout. Its
+//    1-sigma is HDOP (1.5 when the sentence has none) times the fix type's range error: our choice, from
+//    typical receiver figures
 //    (GNSS 4 m, DGNSS/SBAS 1 m, PPS 2 m, RTK fixed 0.02 m, RTK float 0.3 m, dead reckoning 50 m, manual or
 //    simulator 10 m; an AIS position 10 m with the accuracy flag, 30 m without, as the AIS nodes say);
 //  - a fix that would mean a move faster than max_speed since the last is a jump and is rejected
@@ -34,8 +35,11 @@ namespace asv {
 // own_ship_node's keys (asv_risk/config/own_ship_node.yaml documents each), with the ingestion nodes'
 // shared ones (origin, frame_id, publish_rate, silence_warning, heartbeat_period, max_sentence_length).
 struct OwnShipConfig : IngestionConfig {
-  std::string ship = "own";                   // <ship>/base_link is the child frame
-  std::uint32_t own_mmsi = 0;                 // her AIS transponder (0: AIVDO only)
+  std::string ship = "own";    // <ship>/base_link is the child frame
+  std::uint32_t own_mmsi = 0;  // her AIS transponder (0: AIVDO only)
+  // [s] her AIS position stands in this long without a GNSS fix (class A under way reports every 2-10 s,
+  // class B every 30 s: three missed class A reports, our choice)
+  double ais_timeout = 30.0;
   double max_speed = 25.0;                    // [m/s] faster implied moves are jumps (about 50 kn)
   int jump_accept = 3;                        // consistent jumps in a row accepted as the new position
   double min_speed_for_cog = 0.5;             // [m/s] slower, the course over ground is no heading
