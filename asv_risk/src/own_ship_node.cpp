@@ -80,8 +80,7 @@ void OwnShipNode::handleLine(const std::string& line, const ros::Time& stamp) {
         estimator_.aisReport(k.lat_deg, k.lon_deg, a && a->accuracy,
                              k.has_course ? std::optional<double>(k.course) : std::nullopt,
                              k.has_speed ? std::optional<double>(k.speed) : std::nullopt,
-                             k.has_heading ? std::optional<double>(k.heading) : std::nullopt, stamp.toSec(),
-                             wall);
+                             k.has_heading ? std::optional<double>(k.heading) : std::nullopt, stamp.toSec());
         ++ais_reports_;
       }
       return;

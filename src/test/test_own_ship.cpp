@@ -185,7 +185,7 @@ TEST(OwnShip, StaleFixIsAnAlarmAndHerAisReportsAreTheFallback) {
   // Her AIS transponder: 100 m north of the origin, 10 kn on 000, heading 001.
   const asv::LocalFrame frame(c.origin_lat_deg, c.origin_lon_deg);
   const asv::GeoPoint p = frame.toGeodetic({0.0, 100.0});
-  e.aisReport(p.lat_deg, p.lon_deg, true, 0.0, asv::knotsToMps(10.0), asv::degToRad(1.0), 3.0, 3.0);
+  e.aisReport(p.lat_deg, p.lon_deg, true, 0.0, asv::knotsToMps(10.0), asv::degToRad(1.0), 3.0);
   const auto s = e.state(3.0);
   ASSERT_TRUE(s);
   EXPECT_EQ(s->position_source, "AIS");
@@ -200,4 +200,13 @@ TEST(OwnShip, StaleFixIsAnAlarmAndHerAisReportsAreTheFallback) {
   EXPECT_EQ(e.stale(32.9, 32.9).size(), 1u);
   EXPECT_FALSE(e.state(33.1));
   EXPECT_EQ(e.stale(33.1, 33.1)[0].name, "fix");
+}
+
+TEST(Gnss, VariationKeyInRadiansAndRefusedBeyondNinetyDegrees) {
+  asv::ParamMap p;
+  EXPECT_FALSE(g::variationFromParams(p));
+  p.set("variation_deg", -3.5);
+  EXPECT_NEAR(*g::variationFromParams(p), -3.5 * asv::kPi / 180.0, 1e-15);
+  p.set("variation_deg", 95.0);
+  EXPECT_THROW(g::variationFromParams(p), std::invalid_argument);
 }

@@ -1,6 +1,7 @@
 #include "asv_core/codec/gnss.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "asv_core/common/units.h"
 
@@ -176,7 +177,8 @@ Error parseVtg(const nmea::Sentence& s, Motion& out) {
   out = Motion();
   if (nmea::letter(s.field(2)) == 'T')
     out.course = bearing(s.field(1));
-  if (const std::optional<double> kn = number(s.field(5)); kn && *kn >= 0.0 && nmea::letter(s.field(6)) == 'N')
+  if (const std::optional<double> kn = number(s.field(5));
+      kn && *kn >= 0.0 && nmea::letter(s.field(6)) == 'N')
     out.speed = knotsToMps(*kn);
   else if (const std::optional<double> kmh = number(s.field(7));
            kmh && *kmh >= 0.0 && nmea::letter(s.field(8)) == 'K')
@@ -222,6 +224,15 @@ Error parseHdg(const nmea::Sentence& s, std::optional<double> variation, double&
     return Error::kInvalid;
   heading = wrapTwoPi(*magnetic + deviation + *variation);
   return Error::kNone;
+}
+
+std::optional<double> variationFromParams(const ParamMap& p) {
+  if (!p.has("variation_deg"))
+    return std::nullopt;
+  const double deg = p.getDouble("variation_deg", 0.0);
+  if (!(std::fabs(deg) <= 90.0))
+    throw std::invalid_argument("variation_deg must be within +-90 deg");
+  return degToRad(deg);
 }
 
 Error parseRot(const nmea::Sentence& s, double& rate) {

@@ -5,6 +5,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "asv_core/codec/gnss.h"
 #include "asv_core/common/units.h"
 
 namespace asv {
@@ -30,8 +31,6 @@ void AutopilotBridgeConfig::validate() const {
     throw std::invalid_argument("rate must be in (0, 10] Hz");
   if (safe_action != "hold_course" && safe_action != "invalidate")
     throw std::invalid_argument("safe_action must be hold_course or invalidate");
-  if (variation && !(std::fabs(*variation) <= kPi / 2))
-    throw std::invalid_argument("variation_deg must be within +-90 deg");
   if (!(twist_gain >= 0.0) || !(max_yaw_rate > 0.0))
     throw std::invalid_argument("twist_gain must be >= 0 and max_yaw_rate > 0");
   leg.validate();
@@ -52,8 +51,7 @@ AutopilotBridgeConfig AutopilotBridgeConfig::fromParams(const ParamMap& p) {
   c.rate = p.getDouble("rate", c.rate);
   c.safe_action = p.getString("safe_action", c.safe_action);
   c.armed_at_start = p.getBool("armed_at_start", c.armed_at_start);
-  if (p.has("variation_deg"))
-    c.variation = degToRad(p.getDouble("variation_deg", 0.0));
+  c.variation = gnss::variationFromParams(p);
   c.twist_gain = p.getDouble("twist_gain", c.twist_gain);
   c.max_yaw_rate = p.getDouble("max_yaw_rate", c.max_yaw_rate);
   c.leg.lookahead = p.getDouble("lookahead", c.leg.lookahead);

@@ -49,8 +49,6 @@ void OwnShipConfig::validate() const {
   if (!(min_speed_for_cog >= 0.0) || !(heading_sigma > 0.0) || !(cog_heading_sigma > 0.0))
     throw std::invalid_argument(
         "min_speed_for_cog must be >= 0, heading_sigma_deg and cog_heading_sigma_deg > 0");
-  if (variation && !(std::fabs(*variation) <= kPi / 2))
-    throw std::invalid_argument("variation_deg must be within +-90 deg");
   watch.validate();
 }
 
@@ -63,8 +61,7 @@ OwnShipConfig OwnShipConfig::fromParams(const ParamMap& p) {
   c.max_speed = p.getDouble("max_speed", c.max_speed);
   c.jump_accept = p.getInt("jump_accept", c.jump_accept);
   c.min_speed_for_cog = p.getDouble("min_speed_for_cog", c.min_speed_for_cog);
-  if (p.has("variation_deg"))
-    c.variation = degToRad(p.getDouble("variation_deg", 0.0));
+  c.variation = gnss::variationFromParams(p);
   c.heading_sigma = degToRad(p.getDouble("heading_sigma_deg", radToDeg(c.heading_sigma)));
   c.cog_heading_sigma = degToRad(p.getDouble("cog_heading_sigma_deg", radToDeg(c.cog_heading_sigma)));
   c.watch = InputWatchConfig::fromParams(p, c.watch);
@@ -165,8 +162,7 @@ OwnShipEstimator::Use OwnShipEstimator::feed(const nmea::Sentence& s, double t, 
 }
 
 void OwnShipEstimator::aisReport(double lat_deg, double lon_deg, bool accurate, std::optional<double> course,
-                                 std::optional<double> speed, std::optional<double> heading, double t,
-                                 double wall) {
+                                 std::optional<double> speed, std::optional<double> heading, double t) {
   if (!validLatLon(lat_deg, lon_deg))
     return;
   OwnShipState s;
@@ -179,7 +175,7 @@ void OwnShipEstimator::aisReport(double lat_deg, double lon_deg, bool accurate, 
   s.position_source = "AIS";
   s.fix_time = t;
   ais_ = s;
-  (void)wall;  // her reports keep the position alive for ais_timeout (stale()), not the GNSS watch
+  // Her reports keep the position alive for ais_timeout (stale()), not through the GNSS watch.
 }
 
 std::optional<OwnShipState> OwnShipEstimator::state(double t) const {

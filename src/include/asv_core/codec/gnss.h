@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "asv_core/codec/nmea.h"
+#include "asv_core/common/param_map.h"
 
 namespace asv {
 namespace gnss {
@@ -60,6 +61,10 @@ Error parseThs(const nmea::Sentence& s, double& heading);
 // positive); without a variation field, `variation` (e.g. RMC's or configured) is used; without either,
 // kInvalid (a magnetic heading is no true heading).
 Error parseHdg(const nmea::Sentence& s, std::optional<double> variation, double& heading);
+// The key variation_deg (magnetic variation, east positive) in radians; empty when not set;
+// std::invalid_argument beyond +-90 deg.
+std::optional<double> variationFromParams(const ParamMap& params);
+
 // ROT: [rad/s], positive when the bow turns to starboard.
 Error parseRot(const nmea::Sentence& s, double& rate);
 

@@ -74,7 +74,7 @@ public:
   Use feed(const nmea::Sentence& s, double t, double wall, std::string& why);
   // Her own AIS position report (already decoded).
   void aisReport(double lat_deg, double lon_deg, bool accurate, std::optional<double> course,
-                 std::optional<double> speed, std::optional<double> heading, double t, double wall);
+                 std::optional<double> speed, std::optional<double> heading, double t);
 
   // The state at `t` (position dead-reckoned from the fix); empty without a position, a heading or
   // velocity.
