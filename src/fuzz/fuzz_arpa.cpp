@@ -3,7 +3,8 @@
 // Not built by CMake; scripts/fuzz_smoke.sh builds and runs it, or by hand from the repository root:
 //
 //   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -I src/include -I /usr/include/eigen3
-//   src/fuzz/fuzz_arpa.cpp src/lib/codec/nmea.cpp src/lib/codec/arpa.cpp src/lib/codec/gnss.cpp -o fuzz_arpa
+//   src/fuzz/fuzz_arpa.cpp src/lib/codec/nmea.cpp src/lib/codec/arpa.cpp src/lib/codec/gnss.cpp
+//   src/lib/common/param_map.cpp -o fuzz_arpa
 //   ./fuzz_arpa src/fuzz/corpus/arpa -max_total_time=20
 //
 // Every line of the input goes through the NMEA framer with the checksum optional (so mutations of a
