@@ -69,6 +69,7 @@ bench: build
 	  name=$$(basename $$b); echo "== $$name ($$(nproc) cores)"; \
 	  $$b --benchmark_out=out/bench/$$name.json --benchmark_out_format=json || exit 1; \
 	done
+	@scripts/ais_cli_throughput.py
 	@echo "bench: JSON results in out/bench/"
 
 # The headline scenario (Hu et al. Fig. 6: a give-way target that stands on, the own ship's MOPSO

@@ -1,11 +1,17 @@
 // AIS decoding throughput. BM_AisDecode: type 1 sentences through framing, checksum, armour and field
-// extraction, one item per sentence (goal: >= 2 million sentences/s per core).
+// extraction, one item per sentence (goal: >= 2 million sentences/s per core). BM_AisDecodeEveryType
+// and BM_AisJsonEveryType: one message of each of the 27 types (and of the type 6/8 application
+// payloads gpsd decodes), decoded, then also written as gpsd-format JSON.
 #include <benchmark/benchmark.h>
 
+#include <random>
 #include <string>
 #include <vector>
 
 #include "asv_core/codec/ais.h"
+#include "asv_core/codec/ais_json.h"
+#include "asv_core/codec/json_out.h"
+#include "asv_core/codec/nmea_encode.h"
 #include "asv_core/codec/arpa.h"
 #include "asv_core/codec/nmea.h"
 
@@ -72,6 +78,82 @@ void BM_AisDecodeType5(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 BENCHMARK(BM_AisDecodeType5);
+
+// One message per type (random bits of a length every decoder accepts, header set; types 6 and 8
+// with the application ids of the meteorological, tidal and inland messages), as sentence lines.
+const std::vector<std::vector<std::string>>& everyTypeMessages() {
+  struct Shape {
+    unsigned type, bits;
+    int dac, fid;
+  };
+  static const Shape kShapes[] = {
+      {1, 168, -1, -1},  {2, 168, -1, -1},  {3, 168, -1, -1},   {4, 168, -1, -1},  {5, 424, -1, -1},
+      {6, 360, 1, 12},   {6, 280, 1, 32},   {6, 136, 235, 10},  {6, 200, 366, 1},  {7, 168, -1, -1},
+      {8, 352, 1, 11},   {8, 360, 1, 31},   {8, 168, 200, 10},  {8, 256, 366, 56}, {9, 168, -1, -1},
+      {10, 72, -1, -1},  {11, 168, -1, -1}, {12, 300, -1, -1},  {13, 168, -1, -1}, {14, 200, -1, -1},
+      {15, 160, -1, -1}, {16, 144, -1, -1}, {17, 400, -1, -1},  {18, 168, -1, -1}, {19, 312, -1, -1},
+      {20, 160, -1, -1}, {21, 272, -1, -1}, {22, 168, -1, -1},  {23, 160, -1, -1}, {24, 168, -1, -1},
+      {25, 168, -1, -1}, {26, 400, -1, -1}, {27, 96, -1, -1}};
+  static const std::vector<std::vector<std::string>> messages = [] {
+    std::mt19937 rng(7);
+    std::vector<std::vector<std::string>> out;
+    for (const Shape& s : kShapes) {
+      asv::ais::BitWriter w;
+      w.put(s.type, 6);
+      w.put(0, 2);
+      w.put(rng() & 0x3FFFFFFFu, 30);
+      for (unsigned k = 38; k < s.bits; ++k) {
+        if (s.dac >= 0 && k == (s.type == 6 ? 72u : 40u)) {
+          w.put(static_cast<std::uint32_t>(s.dac), 10);
+          w.put(static_cast<std::uint32_t>(s.fid), 6);
+          k += 15;
+          continue;
+        }
+        // Type 24: part B (1), so every message prints.
+        w.put(s.type == 24 && k == 38 ? 0 : (s.type == 24 && k == 39 ? 1 : rng() & 1u), 1);
+      }
+      out.push_back(asv::ais::toSentences(w, 'A', static_cast<int>(out.size() % 10)));
+    }
+    return out;
+  }();
+  return messages;
+}
+
+// Decodes every message of everyTypeMessages(); `json` also writes both JSON forms of the fields.
+void decodeEveryType(benchmark::State& state, bool json) {
+  const auto& messages = everyTypeMessages();
+  asv::ais::Decoder decoder;
+  asv::ais::Message message;
+  asv::json::Out out(nullptr);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    asv::ais::Status st = asv::ais::Status::kPending;
+    for (const auto& line : messages[i])
+      st = decoder.feedLine(line, 0.0, message);
+    if (st != asv::ais::Status::kMessage)
+      state.SkipWithError("decode");
+    if (json) {
+      out.clear();
+      out.reserveRecord(0);
+      asv::ais::AisFields w(out, (i & 1) != 0);
+      asv::ais::writePayloadFields(decoder.payload(), w);
+      benchmark::DoNotOptimize(out.text().data());
+    }
+    benchmark::DoNotOptimize(message.mmsi);
+    i = (i + 1) % messages.size();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+
+void BM_AisDecodeEveryType(benchmark::State& state) {
+  decodeEveryType(state, false);
+}
+BENCHMARK(BM_AisDecodeEveryType);
+
+void BM_AisJsonEveryType(benchmark::State& state) {
+  decodeEveryType(state, true);
+}
+BENCHMARK(BM_AisJsonEveryType);
 
 void BM_ArpaTtm(benchmark::State& state) {
   const std::string line = "$RATTM,01,2.50,045.0,T,12.0,180.0,T,0.50,-5.5,N,TGT1,T,,123456.78,A*6C";

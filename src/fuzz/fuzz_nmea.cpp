@@ -1,8 +1,10 @@
-// libFuzzer target for the NMEA framer, the AIS reassembler/decoder and the ARPA parsers. Not built by
-// CMake; build and run from the repository root with:
+// libFuzzer target for the NMEA framer, the AIS reassembler/decoder, the AIS JSON writers (every type,
+// with the type 6 and 8 application payloads) and the ARPA parsers. Not built by CMake; build and run
+// from the repository root with:
 //
 //   clang++ -std=c++17 -fsanitize=fuzzer,address,undefined -I src/include -I /usr/include/eigen3
-//   src/fuzz/fuzz_nmea.cpp src/lib/codec/nmea.cpp src/lib/codec/ais.cpp src/lib/codec/arpa.cpp
+//   src/fuzz/fuzz_nmea.cpp src/lib/codec/nmea.cpp src/lib/codec/ais.cpp src/lib/codec/ais_json*.cpp
+//   src/lib/codec/arpa.cpp
 //   ./a.out -max_total_time=20
 //
 // (a seed corpus helps: `mkdir corpus; cp ../shared/data/ais/libais/*.nmea corpus/; ./a.out corpus ...`)
@@ -15,6 +17,7 @@
 #include <string_view>
 
 #include "asv_core/codec/ais.h"
+#include "asv_core/codec/ais_json.h"
 #include "asv_core/codec/arpa.h"
 #include "asv_core/codec/nmea.h"
 
@@ -41,8 +44,43 @@ void checkKinematics(const asv::ais::Message& m) {
     __builtin_trap();
   if (k.has_course && !(k.course >= 0.0 && k.course < 2 * M_PI))
     __builtin_trap();
-  if (k.has_speed && !(k.speed >= 0.0 && k.speed < 60.0))
+  // Ships: at most 102.2 kn; SAR aircraft (type 9, whole knots): at most 1021 kn.
+  const double max_speed = m.type == 9 ? 526.0 : 60.0;
+  if (k.has_speed && !(k.speed >= 0.0 && k.speed < max_speed))
     __builtin_trap();
+}
+
+// Both JSON forms of the message's payload fields: within one record's room, and a JSON object's
+// brackets balanced (strings are escaped, so brackets inside them do not count).
+void checkJson(const asv::ais::Payload& p) {
+  static asv::json::Out out(nullptr);
+  for (const bool scaled : {false, true}) {
+    out.clear();
+    out.reserveRecord(0);
+    asv::ais::AisFields w(out, scaled);
+    asv::ais::writePayloadFields(p, w);
+    const std::string_view t = out.text();
+    if (t.size() >= asv::json::Out::kRecordRoom)
+      __builtin_trap();
+    int depth = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (in_string) {
+        if (t[i] == '\\')
+          ++i;
+        else if (t[i] == '"')
+          in_string = false;
+      } else if (t[i] == '"') {
+        in_string = true;
+      } else if (t[i] == '[' || t[i] == '{') {
+        ++depth;
+      } else if (t[i] == ']' || t[i] == '}') {
+        --depth;
+      }
+    }
+    if (depth != 0 || in_string)
+      __builtin_trap();
+  }
 }
 
 }  // namespace
@@ -73,6 +111,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         __builtin_trap();
       if (decoder().feed(s, now, m) == asv::ais::Status::kMessage) {
         checkKinematics(m);
+        checkJson(decoder().payload());
         store.update(m);
       }
       asv::arpa::TrackedTarget t;

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "asv_core/codec/ais.h"
+#include "asv_core/codec/nmea_encode.h"
 #include "asv_core/common/units.h"
 
 // Counts heap allocations, to check that decoding a type 1 sentence allocates nothing. malloc/free
@@ -243,6 +244,119 @@ TEST(AisType4, BaseStation) {
   EXPECT_STREQ(epfdText(r.epfd), "Surveyed");
 }
 
+TEST(AisType11, UtcResponseSharesTheBaseStationLayout) {
+  // sample.aivdm (noaadata): MMSI 304137000, 2009-05-22 02:22:40, accuracy 1, lon -94.4076833,
+  // lat 28.4091167, EPFD 1; the USCG receiver suffix after the checksum is not part of it.
+  const Message m = decodeOne("!AIVDM,1,1,,B,;4R33:1uUK2F`q?mOt@@GoQ00000,0*5D,s28089,d-103,T39.44353985");
+  ASSERT_EQ(m.type, 11);
+  const auto& r = std::get<BaseStationReport>(m.body);
+  EXPECT_EQ(m.mmsi, 304137000u);
+  EXPECT_EQ(r.year, 2009u);
+  EXPECT_EQ(r.month, 5u);
+  EXPECT_EQ(r.day, 22u);
+  EXPECT_EQ(r.hour, 2u);
+  EXPECT_EQ(r.minute, 22u);
+  EXPECT_EQ(r.second, 40u);
+  EXPECT_TRUE(r.accuracy);
+  EXPECT_NEAR(*lonDeg(r.lon), -94.4076833, 1e-6);
+  EXPECT_NEAR(*latDeg(r.lat), 28.4091167, 1e-6);
+  EXPECT_EQ(r.epfd, 1);
+}
+
+TEST(AisType9, SarAircraftIsAMovingPosition) {
+  // sample.aivdm (noaadata): MMSI 111232511, altitude 303 m, SOG 42 kn, lon -6.27884, lat 58.144,
+  // COG 154.5, second 15, DTE 1.
+  const Message m = decodeOne("!AIVDM,1,1,,B,91b55wi;hbOS@OdQAC062Ch2089h,0*30");
+  ASSERT_EQ(m.type, 9);
+  const auto& r = std::get<SarAircraftReport>(m.body);
+  EXPECT_EQ(m.mmsi, 111232511u);
+  EXPECT_EQ(r.alt, 303u);
+  EXPECT_EQ(r.speed, 42u);
+  EXPECT_EQ(r.course, 1545u);
+  EXPECT_EQ(r.second, 15);
+  EXPECT_TRUE(r.dte);
+  Kinematics k;
+  ASSERT_TRUE(toKinematics(m, k));
+  ASSERT_TRUE(k.has_position && k.has_speed && k.has_course);
+  EXPECT_NEAR(k.lon_deg, -6.27884, 1e-5);
+  EXPECT_NEAR(k.lat_deg, 58.144, 1e-5);
+  EXPECT_NEAR(k.speed, 42 * 1852.0 / 3600.0, 1e-9);  // whole knots, not tenths
+  EXPECT_NEAR(k.course, 154.5 * M_PI / 180.0, 1e-9);
+  EXPECT_FALSE(k.has_heading);  // an aircraft reports no heading
+}
+
+TEST(AisSafetyText, AddressedAndBroadcast) {
+  // sample.aivdm (ais.py): type 12 from 2275200 to 215724000, and two type 14 broadcasts.
+  Message m = decodeOne("!AIVDM,1,1,,A,<02:oP0kKcv0@<51C5PB5@?BDPD?P:?2?EB7PDB16693P381>>5<PikP,0*37");
+  ASSERT_EQ(m.type, 12);
+  const auto& a = std::get<SafetyText>(m.body);
+  EXPECT_EQ(m.mmsi, 2275200u);
+  EXPECT_EQ(a.dest_mmsi, 215724000u);
+  EXPECT_EQ(a.seqno, 0);
+  EXPECT_FALSE(a.retransmit);
+  EXPECT_EQ(a.text.view(), "PLEASE REPORT TO JOBOURG TRAFFIC CHANNEL 13");
+  m = decodeOne("!AIVDM,1,1,,A,>5?Per18=HB1U:1@E=B0m<L,2*51");
+  ASSERT_EQ(m.type, 14);
+  EXPECT_EQ(m.mmsi, 351809000u);
+  EXPECT_EQ(std::get<SafetyText>(m.body).text.view(), "RCVD YR TEST MSG");
+  m = decodeOne("!AIVDM,1,1,,A,>3R1p10E3;;R0USCR0HO>0@gN10kGJp,2*7F");
+  EXPECT_EQ(std::get<SafetyText>(m.body).text.view(), "EP228 IX48 FG3 DK7 PL56.");
+  Kinematics k;
+  EXPECT_FALSE(toKinematics(m, k));
+}
+
+// A message of `type` with `nbits` zero bits after the header, decoded.
+Status decodeLength(unsigned type, std::size_t nbits) {
+  BitWriter w;
+  w.put(type, 6);
+  w.put(0, 2);
+  w.put(123456789, 30);
+  for (std::size_t k = 38; k < nbits; ++k)
+    w.put(0, 1);
+  Decoder d;
+  Message m;
+  Status last = Status::kPending;
+  for (const auto& s : toSentences(w, 'A', 1))
+    last = decodeLine(d, s.c_str(), m);
+  return last;
+}
+
+TEST(AisLengths, GpsdLimitsPerType) {
+  // gpsd 3.22's limits (found against its gpsdecode; the differential test checks them on random
+  // lengths): type 9 from 168 bits, 20 from 72 to 186, 25 from 40 to 168, 7 from 72 to 168.
+  EXPECT_EQ(decodeLength(9, 167), Status::kTooShort);
+  EXPECT_EQ(decodeLength(9, 168), Status::kMessage);
+  EXPECT_EQ(decodeLength(9, 400), Status::kMessage);
+  EXPECT_EQ(decodeLength(20, 71), Status::kTooShort);
+  EXPECT_EQ(decodeLength(20, 186), Status::kMessage);
+  EXPECT_EQ(decodeLength(20, 187), Status::kTooLong);
+  EXPECT_EQ(decodeLength(25, 168), Status::kMessage);
+  EXPECT_EQ(decodeLength(25, 169), Status::kTooLong);
+  EXPECT_EQ(decodeLength(7, 72), Status::kMessage);
+  EXPECT_EQ(decodeLength(7, 169), Status::kTooLong);
+  EXPECT_EQ(decodeLength(6, 88), Status::kMessage);
+  EXPECT_EQ(decodeLength(6, 87), Status::kTooShort);
+}
+
+TEST(AisArmour, RawFieldsPastTheEndAsGpsdReadsThem) {
+  // "ww" is 12 one-bits; with 2 fill bits the payload is 10 bits.
+  Payload p;
+  ASSERT_TRUE(p.append("ww"));
+  p.dropFill(2);
+  ASSERT_EQ(p.bits(), 10u);
+  EXPECT_EQ(p.u(8, 4), 3u);     // clipped: the 2 bits present, right-aligned
+  EXPECT_EQ(p.ur(8, 4), 15u);   // as gpsd: the fill bits as sent (11), left-aligned
+  EXPECT_EQ(p.ur(8, 8), 0xF0u);  // then zeros
+  EXPECT_EQ(p.sr(8, 4), -1);
+  EXPECT_EQ(p.ur(12, 8), 0u);
+  EXPECT_EQ(p.rawByte(8), 0xF0u);
+  EXPECT_EQ(p.rawByte(4, 10), 0xFCu);  // bits from 10 on masked
+  // A shorter payload after a longer one reads zeros past its end, not the old bits.
+  p.clear();
+  ASSERT_TRUE(p.append("0"));
+  EXPECT_EQ(p.ur(0, 16), 0u);
+}
+
 TEST(AisType5, TwoFragments) {
   Decoder d;
   Message m;
@@ -462,10 +576,16 @@ TEST(AisFill, ValidatedAndApplied) {
   EXPECT_EQ(decodeLine(d, "!AIVDM,1,1,,A,15RTgt0PAso;90TKcjM8h6g208CQ*56", m), Status::kBadFields);
   EXPECT_EQ(decodeLine(d, "!AIVDM,1,2,,A,15RTgt0PAso;90TKcjM8h6g208CQ,0*49", m), Status::kBadFields);
   EXPECT_EQ(decodeLine(d, "$GPGLL,4916.45,N,12311.12,W,225444,A*31", m), Status::kNotAis);
-  // Unsupported types are counted, not decoded: type 8 from sample.aivdm.
-  EXPECT_EQ(decodeLine(d, "!AIVDM,1,1,,A,802At?00D000qFap02:lA0b@?3fw0001<:iFP2:rf0cCGp0w00,4*5E", m),
-            Status::kUnsupportedType);
-  EXPECT_EQ(d.counters().unsupported, 1u);
+  // A binary message keeps its application id (type 8, DAC 1 FID 16, from sample.aivdm; gpsdecode
+  // prints the same dac and fid).
+  ASSERT_EQ(decodeLine(d, "!AIVDM,1,1,,A,802At?00D000qFap02:lA0b@?3fw0001<:iFP2:rf0cCGp0w00,4*5E", m),
+            Status::kMessage);
+  EXPECT_EQ(std::get<PayloadMessage>(m.body).dac, 1u);
+  EXPECT_EQ(std::get<PayloadMessage>(m.body).fid, 16u);
+  // Types 0 and 28-63 are not defined by ITU-R M.1371: counted, not decoded.
+  EXPECT_EQ(decodeLine(d, "!AIVDM,1,1,,A,0000000000000,0*16", m), Status::kUnsupportedType);
+  EXPECT_EQ(decodeLine(d, "!AIVDM,1,1,,A,t000000000000,0*52", m), Status::kUnsupportedType);
+  EXPECT_EQ(d.counters().unsupported, 2u);
 }
 
 TEST(AisReassembly, InterleavedChannels) {

@@ -1,16 +1,17 @@
 // asv_ais_decode: AIVDM/AIVDO to JSON, one object per message, in the format of gpsd's
-// `gpsdecode -j` (scaled) and `gpsdecode -u -j` (unscaled), for message types 1-5, 18, 19, 21, 24, 27.
+// `gpsdecode -j` (scaled) and `gpsdecode -u -j` (unscaled), for all 27 message types, with the
+// DAC/FID application payloads of types 6 and 8 that gpsd 3.22 decodes.
 //
 // Differences from gpsdecode 3.22, all deliberate (see also test_ais_golden.cpp):
 //  - A sentence is never lost to its neighbours: after garbage, a truncated sentence or a bad
 //    checksum on the same line, decoding resumes at the next `!`/`$`.
-//  - A type 24 part B whose part A was not seen is printed with "part":"B" (gpsd's own format for a
-//    lone part) instead of being dropped; part A alone is held until its part B, as gpsd does.
 //  - Scaled output (-j without -u): "turn" keeps its sign (gpsd 3.22 prints the square of the rate,
 //    losing the direction of the turn).
 //  - "device" is the file name for files; "stdin" for standard input (gpsdecode reads stdin only).
-//  - Message types this decoder does not decode (6-17, 20, 22, 23, 25, 26) are counted, not printed.
 //  - Type 1-3 messages longer than 168 bits are accepted (newer gpsd releases accept up to 204).
+// Type 24: by default part A is held until its part B and printed merged with it; a part B without
+// its part A is dropped, as gpsd does (counted on stderr). With -s every part is printed, part A
+// with "part":"A", a part B with "part":"B" unless it completes a held part A (gpsd's --split24).
 // A summary line with every rejection, by reason, goes to stderr at the end.
 #include <fcntl.h>
 #include <unistd.h>
@@ -26,6 +27,8 @@
 #include <vector>
 
 #include "asv_core/codec/ais.h"
+#include "asv_core/codec/ais_json.h"
+#include "asv_core/codec/json_out.h"
 #include "asv_core/codec/nmea.h"
 
 namespace {
@@ -33,10 +36,9 @@ namespace {
 using namespace asv;
 
 constexpr std::size_t kReadChunk = 1 << 20;
-constexpr std::size_t kOutBuffer = 1 << 20;
 
 const char* const kUsage =
-    "usage: asv_ais_decode [-u] [-h] [FILE...]\n"
+    "usage: asv_ais_decode [-u] [-s] [-h] [FILE...]\n"
     "\n"
     "Decodes AIS NMEA 0183 sentences (!AIVDM/!AIVDO, with or without NMEA 4 tag blocks) from the\n"
     "files given, or from standard input when there is none or FILE is '-', and prints one JSON\n"
@@ -44,117 +46,16 @@ const char* const kUsage =
     "\n"
     "  -u   unscaled output, as `gpsdecode -u -j`: the raw integer fields (lat/lon in 1/10000 min,\n"
     "       speed in 1/10 kn, course in 1/10 deg...)\n"
+    "  -s   print type 24 parts A and B separately (gpsdecode --split24); by default part A is\n"
+    "       merged into its part B and a part B without part A is dropped, as gpsd does\n"
     "  -h   this help\n"
     "\n"
-    "Decoded types: 1, 2, 3, 4, 5, 18, 19, 21, 24 (parts A and B merged), 27. Other types are\n"
-    "counted as unsupported. Rejected lines and fragments are counted by reason and summarised on\n"
-    "stderr at the end. Exit status: 0, or 1 when a file could not be read, 2 on a usage error.\n";
+    "Decoded types: all 27, with the type 6 and 8 application payloads (DAC/FID) gpsd 3.22\n"
+    "decodes; other payloads are printed as \"data\":\"<bits>:<hex>\". Rejected lines, fragments\n"
+    "and messages are counted by reason and summarised on stderr at the end.\n"
+    "Exit status: 0, or 1 when a file could not be read, 2 on a usage error.\n";
 
-// Output buffer with hand-written formatting: printf per field costs more than the decoding.
-class Out {
-public:
-  Out() : buf_(kOutBuffer) {}
-  ~Out() { flush(); }
-
-  void flush() {
-    if (n_ > 0)
-      std::fwrite(buf_.data(), 1, n_, stdout);
-    n_ = 0;
-  }
-  // Called before each record: a record is far below 4 KiB besides the device name.
-  void reserveRecord(std::size_t extra) {
-    if (n_ + 4096 + extra > buf_.size())
-      flush();
-    if (4096 + extra > buf_.size())
-      buf_.resize(4096 + extra);
-  }
-  template <std::size_t N>
-  void lit(const char (&s)[N]) {
-    std::memcpy(buf_.data() + n_, s, N - 1);
-    n_ += N - 1;
-  }
-  void raw(std::string_view s) {
-    std::memcpy(buf_.data() + n_, s.data(), s.size());
-    n_ += s.size();
-  }
-  void u(std::uint64_t v) {
-    char tmp[24];
-    int k = 0;
-    do {
-      tmp[k++] = static_cast<char>('0' + v % 10);
-      v /= 10;
-    } while (v);
-    while (k)
-      buf_[n_++] = tmp[--k];
-  }
-  void i(std::int64_t v) {
-    if (v < 0) {
-      buf_[n_++] = '-';
-      u(static_cast<std::uint64_t>(-(v + 1)) + 1);
-    } else {
-      u(static_cast<std::uint64_t>(v));
-    }
-  }
-  // Zero-padded to `width` digits (%02u, %04u).
-  void pad(std::uint64_t v, int width) {
-    char tmp[24];
-    int k = 0;
-    do {
-      tmp[k++] = static_cast<char>('0' + v % 10);
-      v /= 10;
-    } while (v);
-    while (k < width)
-      tmp[k++] = '0';
-    while (k)
-      buf_[n_++] = tmp[--k];
-  }
-  void b(bool v) {
-    if (v)
-      lit("true");
-    else
-      lit("false");
-  }
-  // Quoted JSON string, escaped as gpsd's json_stringify does.
-  void str(std::string_view s) {
-    buf_[n_++] = '"';
-    for (char c : s) {
-      const unsigned char uc = static_cast<unsigned char>(c);
-      if (uc < 0x20 || uc > 0x7e) {
-        n_ += static_cast<std::size_t>(std::snprintf(buf_.data() + n_, 8, "\\u%04x", uc));
-      } else {
-        if (c == '"' || c == '\\')
-          buf_[n_++] = '\\';
-        buf_[n_++] = c;
-      }
-    }
-    buf_[n_++] = '"';
-  }
-  // v / 10 with one decimal (%.1f of an exact tenth).
-  void tenths(std::uint64_t v) {
-    u(v / 10);
-    buf_[n_++] = '.';
-    buf_[n_++] = static_cast<char>('0' + v % 10);
-  }
-  // raw / 600000 with six decimals, as %.6f: raw * 5 / 3 rounded, never a tie, so integer
-  // arithmetic gives printf's digits exactly.
-  void latlon(std::int32_t raw) {
-    std::int64_t x = static_cast<std::int64_t>(raw) * 5;
-    const bool neg = x < 0;
-    std::uint64_t q = (static_cast<std::uint64_t>(neg ? -x : x) + 1) / 3;
-    if (neg && q != 0)
-      buf_[n_++] = '-';
-    u(q / 1000000);
-    buf_[n_++] = '.';
-    pad(q % 1000000, 6);
-  }
-  void printf1(const char* fmt, double v) {
-    n_ += static_cast<std::size_t>(std::snprintf(buf_.data() + n_, 64, fmt, v));
-  }
-
-private:
-  std::vector<char> buf_;
-  std::size_t n_ = 0;
-};
+using Out = json::Out;
 
 struct Stats {
   std::uint64_t lines = 0;
@@ -162,7 +63,8 @@ struct Stats {
   std::uint64_t other_sentences = 0;  // framed, but not VDM/VDO
   std::uint64_t printed = 0;
   std::uint64_t garbage = 0;      // text outside any sentence
-  std::uint64_t type24_held = 0;  // part A waiting for its part B
+  std::uint64_t type24_held = 0;     // part A waiting for its part B
+  std::uint64_t type24_dropped = 0;  // part B without its part A (not printed without -s)
   std::uint64_t reject[static_cast<int>(nmea::Reject::kCount)] = {};
   std::uint64_t status[static_cast<int>(ais::Status::kCount)] = {};
 };
@@ -206,7 +108,7 @@ private:
 
 class App {
 public:
-  explicit App(bool unscaled) : unscaled_(unscaled) {}
+  App(bool unscaled, bool split24) : unscaled_(unscaled), split24_(split24) {}
 
   void processLine(std::string_view line);
   void finish(const char* prog);
@@ -222,11 +124,14 @@ private:
   void printPositionB(const ais::PositionReportB& x, unsigned type);
   void printAidToNavigation(const ais::AidToNavigation& x);
   void printStaticData24(const ais::StaticDataReport& x, std::uint32_t mmsi, const ais::Text20* merged_name);
+  // False when the message is not printed (type 24 parts held or dropped).
+  bool take24(const ais::Message& m, const ais::StaticDataReport& x, ais::Text20& name, bool& merged);
   void printLongRange(const ais::LongRangeReport& x);
   void header(const ais::Message& m);
   void dims(std::uint32_t bow, std::uint32_t stern, std::uint32_t port, std::uint32_t stbd);
 
   bool unscaled_;
+  bool split24_;
   std::string device_ = "stdin";
   nmea::FramerConfig framer_;
   ais::Decoder decoder_;
@@ -313,37 +218,51 @@ void App::dims(std::uint32_t bow, std::uint32_t stern, std::uint32_t port, std::
   out_.u(stbd);
 }
 
+bool App::take24(const ais::Message& m, const ais::StaticDataReport& x, ais::Text20& name, bool& merged) {
+  merged = false;
+  if (x.part == 0) {
+    queue24_.put(m.mmsi, x.shipname);
+    if (!split24_)
+      ++stats_.type24_held;
+    return split24_;
+  }
+  merged = queue24_.take(m.mmsi, name);
+  if (!merged && !split24_)
+    ++stats_.type24_dropped;
+  return merged || split24_;
+}
+
 void App::print(const ais::Message& m) {
   using namespace ais;
-  // Part A of a type 24 waits for its part B, as in gpsd.
   const auto* t24 = std::get_if<StaticDataReport>(&m.body);
   Text20 name24;
   bool merged24 = false;
-  if (t24) {
-    if (t24->part == 0) {
-      queue24_.put(m.mmsi, t24->shipname);
-      ++stats_.type24_held;
-      return;
-    }
-    merged24 = queue24_.take(m.mmsi, name24);
-  }
+  if (t24 && !take24(m, *t24, name24, merged24))
+    return;
 
   out_.reserveRecord(device_.size() * 6);
   header(m);
-  if (const auto* a = std::get_if<PositionReportA>(&m.body))
+  if (const auto* a = std::get_if<PositionReportA>(&m.body)) {
     printPositionA(*a);
-  else if (const auto* s = std::get_if<BaseStationReport>(&m.body))
+  } else if (const auto* s = std::get_if<BaseStationReport>(&m.body)) {
     printBaseStation(*s);
-  else if (const auto* v = std::get_if<StaticVoyageData>(&m.body))
+  } else if (const auto* v = std::get_if<StaticVoyageData>(&m.body)) {
     printStaticVoyage(*v);
-  else if (const auto* b = std::get_if<PositionReportB>(&m.body))
+  } else if (const auto* b = std::get_if<PositionReportB>(&m.body)) {
     printPositionB(*b, m.type);
-  else if (const auto* n = std::get_if<AidToNavigation>(&m.body))
+  } else if (const auto* n = std::get_if<AidToNavigation>(&m.body)) {
     printAidToNavigation(*n);
-  else if (t24)
+  } else if (t24 && t24->part == 0) {
+    out_.lit(",\"part\":\"A\",\"shipname\":");
+    out_.str(t24->shipname.view());
+  } else if (t24) {
     printStaticData24(*t24, m.mmsi, merged24 ? &name24 : nullptr);
-  else if (const auto* l = std::get_if<LongRangeReport>(&m.body))
+  } else if (const auto* l = std::get_if<LongRangeReport>(&m.body)) {
     printLongRange(*l);
+  } else {
+    AisFields fields(out_, !unscaled_);
+    writePayloadFields(decoder_.payload(), fields);
+  }
   out_.lit("}\r\n");
   ++stats_.printed;
 }
@@ -653,10 +572,12 @@ void App::finish(const char* prog) {
   add("empty payloads", c.empty_payload);
   add("too short", c.too_short);
   add("bad type 24 part", c.bad_part);
+  add("too long", c.too_long);
   add("unsupported types", c.unsupported);
   const std::size_t incomplete = decoder_.pendingCount();
   add("incomplete at end", incomplete);
   add("type 24A held", stats_.type24_held);
+  add("type 24B without 24A dropped", stats_.type24_dropped);
   if (!s.empty())
     line += " (" + s + ")";
   std::fprintf(stderr, "%s\n", line.c_str());
@@ -700,6 +621,7 @@ bool processFd(int fd, App& app) {
 
 int main(int argc, char** argv) {
   bool unscaled = false;
+  bool split24 = false;
   std::vector<const char*> files;
   bool options_done = false;
   for (int i = 1; i < argc; ++i) {
@@ -712,6 +634,8 @@ int main(int argc, char** argv) {
       for (const char* p = a + 1; *p; ++p) {
         if (*p == 'u') {
           unscaled = true;
+        } else if (*p == 's') {
+          split24 = true;
         } else if (*p == 'h') {
           std::fputs(kUsage, stdout);
           return 0;
@@ -727,7 +651,7 @@ int main(int argc, char** argv) {
     files.push_back(a);
   }
 
-  App app(unscaled);
+  App app(unscaled, split24);
   int status = 0;
   if (files.empty())
     files.push_back("-");

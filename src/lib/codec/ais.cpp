@@ -1,5 +1,6 @@
 #include "asv_core/codec/ais.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -36,8 +37,17 @@ bool Payload::append(std::string_view armoured) {
     bytes_[i + 1] = static_cast<std::uint8_t>(w & 0xFF);
     b += 6;
   }
-  nbits_ = b;
+  nbits_ = visible_ = b;
   return true;
+}
+
+std::uint32_t Payload::extract(std::size_t start, std::size_t len) const {
+  const std::size_t i = start >> 3;
+  std::uint64_t w = 0;
+  for (int k = 0; k < 5; ++k)
+    w = (w << 8) | bytes_[i + k];
+  const unsigned shift = static_cast<unsigned>(40 - (start & 7) - len);
+  return static_cast<std::uint32_t>((w >> shift) & ((std::uint64_t{1} << len) - 1));
 }
 
 std::uint32_t Payload::u(std::size_t start, std::size_t len) const {
@@ -45,12 +55,7 @@ std::uint32_t Payload::u(std::size_t start, std::size_t len) const {
     return 0;
   if (start + len > nbits_)
     len = nbits_ - start;
-  const std::size_t i = start >> 3;
-  std::uint64_t w = 0;
-  for (int k = 0; k < 5; ++k)
-    w = (w << 8) | bytes_[i + k];
-  const unsigned shift = static_cast<unsigned>(40 - (start & 7) - len);
-  return static_cast<std::uint32_t>((w >> shift) & ((std::uint64_t{1} << len) - 1));
+  return extract(start, len);
 }
 
 std::int32_t Payload::s(std::size_t start, std::size_t len) const {
@@ -64,6 +69,28 @@ std::int32_t Payload::s(std::size_t start, std::size_t len) const {
 }
 
 // ---- SI views ----
+
+std::uint32_t Payload::ur(std::size_t start, std::size_t len) const {
+  if (len == 0 || len > 32 || start >= visible_)
+    return 0;
+  const std::size_t present = std::min(len, visible_ - start);
+  return extract(start, present) << (len - present);
+}
+
+std::int32_t Payload::sr(std::size_t start, std::size_t len) const {
+  const std::uint32_t v = ur(start, len);
+  if (len == 0 || len >= 32)
+    return static_cast<std::int32_t>(v);
+  const std::uint32_t sign = std::uint32_t{1} << (len - 1);
+  return static_cast<std::int32_t>(v ^ sign) - static_cast<std::int32_t>(sign);
+}
+
+std::uint32_t Payload::rawByte(std::size_t start, std::size_t limit) const {
+  std::uint32_t v = ur(start, 8);
+  if (limit != 0 && start + 8 > limit)
+    v &= limit > start ? (0xFFu << (8 - (limit - start))) & 0xFFu : 0u;
+  return v;
+}
 
 std::optional<double> latDeg(std::int32_t raw) {
   if (raw == kLatNotAvailable || raw > 90 * 600000 || raw < -90 * 600000)
@@ -152,6 +179,19 @@ bool toKinematics(const Message& m, Kinematics& k) {
   }
   if (auto* s = std::get_if<BaseStationReport>(&m.body)) {
     setPosition(k, s->lat, s->lon);
+    return true;
+  }
+  if (auto* r = std::get_if<SarAircraftReport>(&m.body)) {
+    setPosition(k, r->lat, r->lon);
+    // Whole knots (1022 = 1022 kn or more, no exact value); course as in type 1.
+    if (r->speed < 1022) {
+      k.has_speed = true;
+      k.speed = knotsToMps(static_cast<double>(r->speed));
+    }
+    if (auto c = courseRad(r->course)) {
+      k.has_course = true;
+      k.course = *c;
+    }
     return true;
   }
   if (auto* n = std::get_if<AidToNavigation>(&m.body)) {
@@ -292,8 +332,11 @@ Status decodeType18or19(const Payload& p, Message& m) {
 }
 
 Status decodeType21(const Payload& p, Message& m) {
+  // 272 bits plus a name extension of up to 14 characters; gpsd 3.22 takes up to 368.
   if (p.bits() < 272)
     return Status::kTooShort;
+  if (p.bits() > 368)
+    return Status::kTooLong;
   m.body = AidToNavigation();
   auto& r = std::get<AidToNavigation>(m.body);
   r.aid_type = static_cast<std::uint8_t>(p.u(38, 5));
@@ -325,6 +368,8 @@ Status decodeType24(const Payload& p, Message& m) {
     return Status::kBadPart;
   if (p.bits() < (part == 0 ? 160u : 168u))
     return Status::kTooShort;
+  if (part == 0 && p.bits() > 168)  // 160 bits, or the whole slot; gpsd 3.22 takes no more
+    return Status::kTooLong;
   m.body = StaticDataReport();
   auto& r = std::get<StaticDataReport>(m.body);
   r.part = static_cast<std::uint8_t>(part);
@@ -350,8 +395,11 @@ Status decodeType24(const Payload& p, Message& m) {
 }
 
 Status decodeType27(const Payload& p, Message& m) {
+  // 96 bits; some senders fill the whole 168-bit slot (gpsd 3.22 takes exactly these two lengths).
   if (p.bits() < 96)
     return Status::kTooShort;
+  if (p.bits() != 96 && p.bits() != 168)
+    return Status::kTooLong;
   LongRangeReport r;
   r.accuracy = p.u(38, 1) != 0;
   r.raim = p.u(39, 1) != 0;
@@ -363,6 +411,86 @@ Status decodeType27(const Payload& p, Message& m) {
   r.gnss = p.u(94, 1) != 0;
   m.body = r;
   return Status::kMessage;
+}
+
+Status decodeType9(const Payload& p, Message& m) {
+  SarAircraftReport r;
+  r.alt = p.u(38, 12);
+  r.speed = p.u(50, 10);
+  r.accuracy = p.u(60, 1) != 0;
+  r.lon = p.s(61, 28);
+  r.lat = p.s(89, 27);
+  r.course = p.u(116, 12);
+  r.second = static_cast<std::uint8_t>(p.u(128, 6));
+  r.regional = p.u(134, 8);
+  r.dte = p.u(142, 1) != 0;
+  r.assigned = p.u(146, 1) != 0;
+  r.raim = p.u(147, 1) != 0;
+  r.radio = p.u(148, 20);
+  m.body = r;
+  return Status::kMessage;
+}
+
+Status decodeSafetyText(const Payload& p, Message& m) {
+  m.body = SafetyText();
+  auto& r = std::get<SafetyText>(m.body);
+  std::size_t start = 40;
+  if (m.type == 12) {
+    r.seqno = static_cast<std::uint8_t>(p.u(38, 2));
+    r.dest_mmsi = p.u(40, 30);
+    r.retransmit = p.u(70, 1) != 0;
+    start = 72;
+  }
+  p.text(start, (p.bits() - start) / 6, r.text);
+  return Status::kMessage;
+}
+
+Status decodePayloadMessage(const Payload& p, Message& m) {
+  PayloadMessage r;
+  if (m.type == 6) {
+    r.dac = p.u(72, 10);
+    r.fid = p.u(82, 6);
+  } else if (m.type == 8) {
+    r.dac = p.u(40, 10);
+    r.fid = p.u(50, 6);
+  }
+  m.body = r;
+  return Status::kMessage;
+}
+
+// Lengths gpsd 3.22 accepts, in bits, for the types decoded after the first ten (index: type).
+struct LengthRule {
+  std::uint16_t min, max;
+};
+constexpr LengthRule kLengths[28] = {
+    {0, 0},      {0, 0},      {0, 0},    {0, 0},      {0, 0},   {0, 0},      {88, 1008},  {72, 168},
+    {56, 1008},  {168, 1008}, {72, 1008}, {168, 1008}, {72, 1008}, {72, 168},  {40, 1008}, {88, 168},
+    {96, 168},   {80, 816},   {0, 0},    {0, 0},      {72, 186}, {0, 0},     {168, 1008}, {160, 1008},
+    {0, 0},      {40, 168},   {60, 1004}, {0, 0}};
+
+// Types 25 and 26 must also hold the destination and application id their flags announce.
+bool slotBinaryFits(const Payload& p, unsigned type) {
+  const std::size_t need = 40 + (p.u(39, 1) ? 16 : 0) + (p.u(38, 1) ? 30 : 0) + (type == 26 ? 20 : 0);
+  return p.bits() >= need;
+}
+
+Status decodeOtherType(const Payload& p, Message& m) {
+  const LengthRule rule = kLengths[m.type];
+  if (p.bits() < rule.min || ((m.type == 25 || m.type == 26) && !slotBinaryFits(p, m.type)))
+    return Status::kTooShort;
+  if (p.bits() > rule.max)
+    return Status::kTooLong;
+  switch (m.type) {
+    case 9:
+      return decodeType9(p, m);
+    case 11:
+      return decodeType4(p, m);
+    case 12:
+    case 14:
+      return decodeSafetyText(p, m);
+    default:
+      return decodePayloadMessage(p, m);
+  }
 }
 
 }  // namespace
@@ -391,8 +519,26 @@ Status decodePayload(const Payload& p, Message& m) {
       return decodeType24(p, m);
     case 27:
       return decodeType27(p, m);
+    case 6:
+    case 7:
+    case 8:
+    case 9:
+    case 10:
+    case 11:
+    case 12:
+    case 13:
+    case 14:
+    case 15:
+    case 16:
+    case 17:
+    case 20:
+    case 22:
+    case 23:
+    case 25:
+    case 26:
+      return decodeOtherType(p, m);
     default:
-      return Status::kUnsupportedType;
+      return Status::kUnsupportedType;  // 0 and 28-63 are not defined
   }
 }
 
@@ -431,6 +577,8 @@ const char* statusText(Status s) {
       return "payload too short for its type";
     case Status::kBadPart:
       return "type 24 part number not 0 or 1";
+    case Status::kTooLong:
+      return "payload too long for its type";
     case Status::kCount:
       break;
   }
@@ -475,6 +623,9 @@ Status Decoder::count(Status s) {
       break;
     case Status::kBadPart:
       ++counters_.bad_part;
+      break;
+    case Status::kTooLong:
+      ++counters_.too_long;
       break;
     default:
       break;
@@ -896,6 +1047,26 @@ const char* aidTypeText(unsigned a) {
                                         "Special Mark",
                                         "Light Vessel / LANBY / Rigs"};
   return kText[a & 31u];
+}
+
+const char* stationTypeText(unsigned t) {
+  static const char* const kText[16] = {"All types of mobiles",
+                                        "Reserved for future use",
+                                        "All types of Class B mobile stations",
+                                        "SAR airborne mobile station",
+                                        "Aid to Navigation station",
+                                        "Class B shipborne mobile station",
+                                        "Regional use and inland waterways",
+                                        "Regional use and inland waterways",
+                                        "Regional use and inland waterways",
+                                        "Regional use and inland waterways",
+                                        "Reserved for future use",
+                                        "Reserved for future use",
+                                        "Reserved for future use",
+                                        "Reserved for future use",
+                                        "Reserved for future use",
+                                        "Reserved for future use"};
+  return kText[t & 15u];
 }
 
 }  // namespace ais

@@ -1,5 +1,8 @@
 // AIS (ITU-R M.1371) decoding of AIVDM/AIVDO sentences: six-bit armour, multi-fragment reassembly,
-// message types 1, 2, 3, 4, 5, 18, 19, 21, 24 and 27.
+// all 27 message types. Types 1-5, 9, 11, 12, 14, 18, 19, 21, 24 and 27 are decoded into typed
+// bodies; the others (binary, acknowledgement, interrogation and link-management messages) are
+// checked for length as gpsd 3.22 checks them and keep their fields in the payload bits, which
+// ais_json.h prints field by field (Decoder::payload()).
 //
 // Every message keeps the raw (unscaled, integer) fields exactly as transmitted, because tools such
 // as `asv_ais_decode -u` must reproduce gpsd's unscaled output and because "not available" must stay
@@ -68,16 +71,26 @@ class Payload {
 public:
   // Appends armoured characters; false on a character outside the armour alphabet or overflow.
   bool append(std::string_view armoured);
-  // Drops the `fill` padding bits at the end (0..5).
+  // Drops the `fill` padding bits at the end (0..5); they stay visible to the raw reads, as in gpsd's
+  // bit buffer (binary data of types 17, 25 and 26 prints them).
   void dropFill(int fill) { nbits_ = static_cast<std::size_t>(fill) > nbits_ ? 0 : nbits_ - fill; }
-  void clear() { nbits_ = 0; }
+  void clear() { nbits_ = visible_ = 0; }
   std::size_t bits() const { return nbits_; }
+  // Longest six-bit text a payload can hold [characters].
+  static constexpr std::size_t kMaxTextChars = kMaxPayloadBits / 6;
 
   // Unsigned/signed (two's complement) field of `len` bits (<= 32) at bit `start`. A field that runs
   // past the end reads only the bits present, right-aligned, as gpsd does for short type 1-3
   // messages (163 bits), so the output matches it; bits past the end never read as data.
   std::uint32_t u(std::size_t start, std::size_t len) const;
   std::int32_t s(std::size_t start, std::size_t len) const;
+  // Fields read as gpsd reads its bit buffer: past the end of the payload come the fill bits as
+  // sent, then zeros, left-aligned. gpsd decodes fields of some types without checking
+  // the length.
+  std::uint32_t ur(std::size_t start, std::size_t len) const;
+  std::int32_t sr(std::size_t start, std::size_t len) const;
+  // The 8 bits at `start` read as ur(); bits at or after `limit` read as 0 when `limit` is not 0.
+  std::uint32_t rawByte(std::size_t start, std::size_t limit = 0) const;
   // `count` six-bit characters from `start`, stopping at the first '@' (the ITU padding character)
   // and the payload end; trailing spaces are trimmed when `trim`.
   template <std::size_t N>
@@ -110,8 +123,12 @@ public:
   static char sixbitChar(std::uint32_t v);
 
 private:
+  // `len` (<= 32) bits at `start` as stored, unchecked.
+  std::uint32_t extract(std::size_t start, std::size_t len) const;
+
   std::array<std::uint8_t, kMaxPayloadBits / 8 + 8> bytes_{};
   std::size_t nbits_ = 0;
+  std::size_t visible_ = 0;  // bits readable by ur(): the payload and its fill bits
 };
 
 // ---- Messages (raw fields named as in ITU-R M.1371 / gpsd; units in the comments) ----
@@ -149,7 +166,7 @@ struct PositionReportA {
   std::uint32_t radio = 0;
 };
 
-// Types 4 (base station report) and 11 share this layout; only 4 is decoded.
+// Types 4 (base station report) and 11 (UTC/date response) share this layout.
 struct BaseStationReport {
   std::uint32_t year = 0, month = 0, day = 0, hour = 24, minute = 60, second = 60;
   bool accuracy = false;
@@ -238,8 +255,88 @@ struct LongRangeReport {
   bool gnss = false;             // GNSS position status bit as sent: 0 = current GNSS fix
 };
 
+// Type 9: standard SAR aircraft position report.
+struct SarAircraftReport {
+  std::uint32_t alt = 4095;    // altitude [m], 4095 = not available, 4094 = 4094 m or higher
+  std::uint32_t speed = 1023;  // kn (whole knots), 1023 = not available, 1022 = 1022 kn or faster
+  bool accuracy = false;
+  std::int32_t lon = kLonNotAvailable;
+  std::int32_t lat = kLatNotAvailable;
+  std::uint32_t course = 3600;  // 1/10 deg
+  std::uint8_t second = 60;
+  std::uint32_t regional = 0;
+  bool dte = false, assigned = false, raim = false;
+  std::uint32_t radio = 0;
+};
+
+// Types 12 (addressed) and 14 (broadcast): safety-related text.
+struct SafetyText {
+  std::uint8_t seqno = 0;       // type 12 only
+  std::uint32_t dest_mmsi = 0;  // type 12 only
+  bool retransmit = false;      // type 12 only
+  FixedString<Payload::kMaxTextChars> text;
+};
+
+// Types 6, 7, 8, 10, 13, 15, 16, 17, 20, 22, 23, 25 and 26: fields stay in the payload bits
+// (Decoder::payload(), ais_json.h); the application identifier of the binary types 6 and 8 is kept
+// here to route them (DAC/FID 1/31 is weather).
+struct PayloadMessage {
+  std::uint32_t dac = 0, fid = 0;  // types 6 and 8 only
+};
+
+// Type 8, DAC 1 FID 31: IMO289 (SN.1/Circ.289) meteorological and hydrographic data, from a weather
+// station or buoy. Raw fields as sent, defaults the "not available" codes. Decoded from the payload by
+// decodeMetHydro31(); the SI accessors return std::nullopt for "not available" and reserved codes.
+struct MetHydroReport {
+  std::int32_t lon = 181 * 60000;                // 1/1000 min, 181 deg = not available
+  std::int32_t lat = 91 * 60000;                 // 1/1000 min, 91 deg = not available
+  bool accuracy = false;                         // position accuracy: true = high (< 10 m)
+  std::uint8_t day = 0, hour = 24, minute = 60;  // UTC of the observation; 0, 24, 60 = not available
+  std::uint8_t wspeed = 127, wgust = 127;        // kn (10-min mean, 10-min max), 126 = 126 kn or more
+  std::uint16_t wdir = 360, wgustdir = 360;      // deg, direction the wind blows from, 360 = n/a
+  std::int16_t airtemp = -1024;                  // 0.1 degC, -600..600
+  std::uint8_t humidity = 101;                   // %, 0..100
+  std::int16_t dewpoint = 501;                   // 0.1 degC, -200..500
+  std::uint16_t pressure = 511;     // hPa - 799: 0 = 799 hPa or less, 1..401, 402 = 1201 hPa or more
+  std::uint8_t pressuretend = 3;    // 0 steady, 1 decreasing, 2 increasing, 3 = not available
+  bool visgreater = false;          // the visibility is more than the value sent (sensor range reached)
+  std::uint8_t visibility = 127;    // 0.1 NM, 0..126
+  std::uint16_t waterlevel = 4001;  // 0.01 m + 10 m: 0..4000 is -10.00..+30.00 m (incl. tide)
+  std::uint8_t leveltrend = 3;      // as pressuretend
+  std::uint8_t cspeed = 255, cspeed2 = 255, cspeed3 = 255;  // current 0.1 kn, 251 = 25.1 kn or more
+  std::uint16_t cdir = 360, cdir2 = 360, cdir3 = 360;       // deg
+  std::uint8_t cdepth2 = 31, cdepth3 = 31;                  // m below the surface, 0..30
+  std::uint8_t waveheight = 255, swellheight = 255;         // significant height 0.1 m, 251 = 25.1 m+
+  std::uint8_t waveperiod = 63, swellperiod = 63;           // s, 0..60
+  std::uint16_t wavedir = 360, swelldir = 360;              // deg
+  std::uint8_t seastate = 13;                               // Beaufort 0..12, 13 = not available
+  std::int16_t watertemp = 501;                             // 0.1 degC, -100..500
+  std::uint8_t preciptype = 7;   // WMO 306 code table 4.201: 1 rain ... 5 snow, 7 = not available
+  std::uint16_t salinity = 501;  // 0.1 permille, 0..500
+  std::uint8_t ice = 3;          // 0 no, 1 yes, 3 = not available
+
+  std::optional<double> latDeg() const;
+  std::optional<double> lonDeg() const;
+  std::optional<double> windSpeedMps() const;  // 126 ("126 kn or more") gives 126 kn
+  std::optional<double> windGustMps() const;
+  std::optional<double> windDirectionRad() const;  // nautical, the direction the wind blows from
+  // Horizontal visibility [m]; with `visgreater` set, the visibility is more than this.
+  std::optional<double> visibilityM() const;
+  std::optional<double> airTemperatureC() const;
+  std::optional<double> airPressureHpa() const;  // 799 and 1201 mean "or less" and "or more"
+  std::optional<int> seaStateBeaufort() const;
+  std::optional<double> waterLevelM() const;  // above the local chart datum, tide included
+};
+
+// Decodes a type 8 DAC 1 FID 31 payload (`p` whole, from the message type). False, leaving `out`
+// unchanged, for another type or DAC/FID, or a payload shorter than the 350 bits that hold the
+// fields (gpsd reads short ones anyway, zeros and fill bits in place of the missing fields) or
+// longer than gpsd's 1008.
+bool decodeMetHydro31(const Payload& p, MetHydroReport& out);
+
 using Body = std::variant<PositionReportA, BaseStationReport, StaticVoyageData, PositionReportB,
-                          AidToNavigation, StaticDataReport, LongRangeReport>;
+                          AidToNavigation, StaticDataReport, LongRangeReport, SarAircraftReport, SafetyText,
+                          PayloadMessage>;
 
 struct Message {
   std::uint8_t type = 0;
@@ -252,7 +349,7 @@ struct Message {
   Body body;
 };
 
-// Kinematic SI view of a position report (types 1-3, 4, 18, 19, 21, 27), for the tracker. Unknown
+// Kinematic SI view of a position report (types 1-3, 4, 9, 11, 18, 19, 21, 27), for the tracker. Unknown
 // quantities are NaN with their has_ flag false.
 struct Kinematics {
   std::uint32_t mmsi = 0;
@@ -270,7 +367,7 @@ struct Kinematics {
   int turn_direction = 0;  // sign of the turn when known at least as "fast left/right"
 };
 
-// False for messages without a position (5, 24).
+// False for messages without a position (5, 24 and the payload-only types).
 bool toKinematics(const Message& m, Kinematics& out);
 
 // ---- Decoder ----
@@ -303,6 +400,7 @@ enum class Status : std::uint8_t {
   kUnsupportedType,  // well-formed, but a type this decoder does not decode
   kTooShort,         // fewer bits than the type needs
   kBadPart,          // type 24 part number other than 0/1
+  kTooLong,          // more bits than the type allows (gpsd 3.22's limits)
   kCount
 };
 
@@ -324,6 +422,7 @@ struct Counters {
   std::uint64_t unsupported = 0;
   std::uint64_t too_short = 0;
   std::uint64_t bad_part = 0;
+  std::uint64_t too_long = 0;
 };
 
 // Decodes one complete payload (all fragments joined, fill bits removed) into `out`.
@@ -346,6 +445,8 @@ public:
   std::size_t pendingCount() const;
   const Counters& counters() const { return counters_; }
   const DecoderConfig& config() const { return config_; }
+  // The payload of the message last returned with Status::kMessage (valid until the next feed).
+  const Payload& payload() const { return payload_; }
 
 private:
   struct Pending {
@@ -419,6 +520,7 @@ const char* navStatusText(unsigned status);
 const char* shipTypeText(unsigned shiptype);
 const char* epfdText(unsigned epfd);
 const char* aidTypeText(unsigned aid_type);
+const char* stationTypeText(unsigned station_type);  // type 23
 
 }  // namespace ais
 }  // namespace asv
