@@ -113,7 +113,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
   follower_ = std::make_unique<asv::PlanFollower>(follower_config_);  // validates: throws on a bad value
   if (p.has_goal)
     follower_->setGoal(p.goal);
-  follower_->setObstacles(obstacles_);
+  follower_->setObstacles(allObstacles());
   start();
 }
 
@@ -154,6 +154,8 @@ void PlannerNode::start() {
   targets_sub_ = lockstep_.subscribe("targets", 10, &PlannerNode::targetsCallback, this, false);
   goal_sub_ = nh_.subscribe("goal", 1, &PlannerNode::goalCallback, this);
   alarms_sub_ = nh_.subscribe("alarms", 50, &PlannerNode::alarmCallback, this);
+  if (params_.use_aids)
+    aids_sub_ = nh_.subscribe("aids_to_navigation", 1, &PlannerNode::aidsCallback, this);
   watch_ = asv::InputWatch(params_.watch);
   for (const ros::Subscriber* s : {&odom_sub_, &risk_sub_, &targets_sub_})
     watch_.add(s->getTopic());
@@ -172,6 +174,36 @@ void PlannerNode::start() {
            params_.planner.c_str(), params_.has_goal ? "set" : "none", follower_config_.time_budget);
 }
 
+std::vector<asv::StaticObstacle> PlannerNode::allObstacles() const {
+  std::vector<asv::StaticObstacle> all = obstacles_;
+  all.insert(all.end(), aid_obstacles_.begin(), aid_obstacles_.end());
+  return all;
+}
+
+void PlannerNode::aidsCallback(const asv_msgs::AidToNavigationArray::ConstPtr& msg) {
+  if (msg->header.frame_id != params_.frame_id) {
+    ROS_WARN_THROTTLE(10.0, "planner_node: aids_to_navigation in frame '%s', not '%s': ignored",
+                      msg->header.frame_id.c_str(), params_.frame_id.c_str());
+    return;
+  }
+  const double radius = asv::pointHazardRadius(params_.aid_clearance, follower_config_.min_obstacle_clearance_m);
+  std::vector<asv::StaticObstacle> hazards;
+  for (const auto& a : msg->aids) {
+    const Eigen::Vector2d p(a.position.x, a.position.y);
+    if (p.allFinite())
+      hazards.push_back(asv::pointHazard("aid:" + std::to_string(a.mmsi), p, radius));
+  }
+  auto same = [](const asv::StaticObstacle& x, const asv::StaticObstacle& y) {
+    return x.name == y.name && x.polygon == y.polygon;
+  };
+  if (std::equal(hazards.begin(), hazards.end(), aid_obstacles_.begin(), aid_obstacles_.end(), same))
+    return;  // republished unchanged (every aids/publish_period)
+  ROS_INFO("planner_node: %zu aids to navigation kept clear of by %.0f m", hazards.size(),
+           std::max(params_.aid_clearance, follower_config_.min_obstacle_clearance_m));
+  aid_obstacles_ = std::move(hazards);
+  follower_->setObstacles(allObstacles());
+}
+
 void PlannerNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
     own_.reset();
@@ -183,7 +215,7 @@ void PlannerNode::checkClock() {
     follower_ = std::make_unique<asv::PlanFollower>(follower_config_);
     if (params_.has_goal)
       follower_->setGoal(params_.goal);
-    follower_->setObstacles(obstacles_);
+    follower_->setObstacles(allObstacles());
     return std::string("own ship, targets, risk and plan dropped");
   });
 }

@@ -15,42 +15,6 @@ namespace asv_risk {
 
 namespace {
 
-// The message a target is published as (asv_msgs/Target has no has_course/has_speed: an unknown
-// velocity is said by the quality).
-asv_msgs::Target toMsg(const asv::AisTarget& s) {
-  asv_msgs::Target t;
-  t.id = "ais:" + std::to_string(s.mmsi);
-  t.source = asv_msgs::Target::SOURCE_AIS;
-  t.ais_class = s.ais_class == 'B' ? asv_msgs::Target::AIS_CLASS_B : asv_msgs::Target::AIS_CLASS_A;
-  t.mmsi = s.mmsi;
-  t.nav_status = s.nav_status;
-  t.position.x = s.position.x();
-  t.position.y = s.position.y();
-  t.has_geodetic = true;
-  t.latitude = s.lat_deg;
-  t.longitude = s.lon_deg;
-  t.quality = s.velocity == asv::AisVelocity::Reported            ? kQualityFull
-              : s.velocity == asv::AisVelocity::CourseFromHeading ? kQualityCourseFromHeading
-                                                                  : kQualityNoVelocity;
-  if (s.velocity != asv::AisVelocity::Unknown) {
-    t.course_over_ground = asv::wrapTwoPi(s.course);
-    t.speed_over_ground = s.speed;
-    const Eigen::Vector2d v = asv::courseSpeedToVelocity(s.course, s.speed);
-    t.velocity.x = v.x();
-    t.velocity.y = v.y();
-  }
-  t.has_heading = s.has_heading;
-  if (s.has_heading)
-    t.heading = s.heading;
-  t.has_rate_of_turn = s.has_turn;
-  if (s.has_turn)
-    t.rate_of_turn = s.rate_of_turn;
-  t.position_covariance = {s.sigma * s.sigma, 0.0, 0.0, s.sigma * s.sigma};
-  t.stamp = ros::Time().fromNSec(static_cast<std::uint64_t>(s.stamp_ns));
-  return t;
-}
-
-
 std::string trimmed(std::string_view s) {
   while (!s.empty() && (s.back() == ' ' || s.back() == '@'))
     s.remove_suffix(1);
@@ -94,11 +58,15 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
         c.max_ships = params_.max_static;
         return c;
       }()),
-      table_(params_.targets, frame_) {
+      table_(params_.targets, frame_),
+      aux_(nh_, params_, frame_) {
   targets_pub_ = nh_.advertise<asv_msgs::TargetArray>("ais/targets", 10);
   // Each array holds what was reported since the last: nothing new, nothing to publish.
   lockstep_.every(
       1.0 / params_.publish_rate, [this] { publish(); }, true);
+  lockstep_.every(
+      1.0 / params_.publish_rate, [this] { aux_.publishSar(ros::Time::now()); }, true);
+  lockstep_.every(params_.aids_period, [this] { aux_.publishAids(ros::Time::now()); });
   // Free-running only: in lockstep a node that stops stops the simulation (lockstep_timeout).
   if (!lockstep_.enabled())
     lockstep_.every(params_.heartbeat_period, [this] { heartbeat(); });
@@ -116,8 +84,9 @@ AisNode::AisNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void AisNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
-    std::string what = std::to_string(table_.size()) + " ships and the pending fragments forgotten";
+    std::string what = std::to_string(table_.size()) + " ships, the aids and the pending fragments forgotten";
     table_.clear();
+    aux_.clear();
     decoder_.clearPending();
     return what;
   });
@@ -150,6 +119,8 @@ void AisNode::handleMessage(const asv::ais::Message& m, const ros::Time& stamp) 
     ++own_ship_;
     return;
   }
+  if (aux_.handle(m, decoder_.payload(), stamp))  // aids, SAR aircraft, safety texts, weather
+    return;
   const bool had_static = store_.update(m) != nullptr;
   switch (table_.update(m, static_cast<std::int64_t>(stamp.toNSec()))) {
     case asv::AisOutcome::Target:
@@ -158,7 +129,7 @@ void AisNode::handleMessage(const asv::ais::Message& m, const ros::Time& stamp) 
     case asv::AisOutcome::OwnShip:
       ++own_ship_;
       break;
-    case asv::AisOutcome::NotAShip:  // static data only (5, 24), base stations (4), aids (21)
+    case asv::AisOutcome::NotAShip:  // static data only (5, 24), base stations (4), the other types
       if (!had_static)
         ++not_ships_;
       break;
@@ -202,7 +173,7 @@ void AisNode::publish() {
   arr.header.stamp = now;
   arr.header.frame_id = params_.frame_id;
   table_.due(static_cast<std::int64_t>(now.toNSec()), [&](const asv::AisTarget& s, double age) {
-    asv_msgs::Target t = toMsg(s);
+    asv_msgs::Target t = aisTargetMsg(s);
     mergeStatic(t);  // static data may have arrived after the position
     t.age = std::max(0.0, age);
     arr.targets.push_back(std::move(t));
@@ -232,7 +203,7 @@ void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     rejected_values += rejected_[i];
   }
   const std::uint64_t decode_errors =
-      c.bad_fields + c.bad_fill + c.bad_armour + c.empty_payload + c.too_short + c.bad_part;
+      c.bad_fields + c.bad_fill + c.bad_armour + c.empty_payload + c.too_short + c.too_long + c.bad_part;
   const std::uint64_t rejected = framer_.totalRejected() + reassembly_drops + decode_errors + rejected_values;
   stat.add("sentences per second", (framer_.sentences() - diag_sentences_) / dt);
   framer_.diagnose(stat);
@@ -247,7 +218,8 @@ void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("rejected values", rejected_values);
   stat.add("position reports", reports_);
   stat.add("own ship (VDO) reports ignored", own_ship_);
-  stat.add("base stations / aids to navigation ignored", not_ships_);
+  stat.add("other messages (base stations, binary, link management) not used", not_ships_);
+  aux_.diagnose(stat);
   stat.add("targets known", table_.size());
   stat.add("targets forgotten (max_targets)", table_.evicted());
   stat.add("static records", store_.size());

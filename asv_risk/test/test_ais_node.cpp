@@ -10,7 +10,11 @@
 //    (velocity unknown) and speed/course 0, never NaN;
 //  - MMSI 244000999 with latitude 91 (not available): no target;
 //  - garbage, a truncated sentence, a bad checksum, fill bits 7, an oversize line and binary bytes:
-//    ignored, and the valid sentences still come through.
+//    ignored, and the valid sentences still come through;
+//  - the messages that are not ship targets reach their own topics: an aid to navigation (type 21)
+//    on ais/aids_to_navigation, a SAR aircraft (type 9, never on ais/targets) on ais/sar_aircraft, a
+//    broadcast safety text (14) on ais/safety_messages and an IMO289 weather report (8, DAC 1 FID
+//    31) on ais/weather, with values converted by hand from ITU-R M.1371 and IMO SN.1/Circ.289.
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -21,11 +25,15 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <asv_core/codec/ais.h>
 #include <asv_core/codec/nmea_encode.h>
 #include <asv_core/common/geodesy.h>
+#include <asv_msgs/AidToNavigationArray.h>
+#include <asv_msgs/AisSafetyMessage.h>
+#include <asv_msgs/AisWeather.h>
 #include <asv_msgs/NmeaSentence.h>
 #include <asv_msgs/TargetArray.h>
 #include <ros/ros.h>
@@ -88,11 +96,81 @@ std::vector<std::string> inputLines() {
   return lines;
 }
 
+// One sentence of an `n`-bit message, zero but for the (start, width, value) fields.
+std::string sentenceWith(std::size_t n, const std::vector<std::tuple<std::size_t, int, std::uint32_t>>& fields) {
+  std::vector<int> bits(n, 0);
+  for (const auto& [start, width, value] : fields)
+    for (int k = 0; k < width; ++k)
+      bits[start + k] = static_cast<int>((value >> (width - 1 - k)) & 1u);
+  asv::ais::BitWriter w;
+  for (int b : bits)
+    w.put(static_cast<std::uint32_t>(b), 1);
+  return asv::ais::toSentences(w, 'A', 0, "AI", 200).front();
+}
+
+// Six-bit code of an upper-case letter or a space.
+std::uint32_t sixbit(char c) {
+  return c == ' ' ? 32u : static_cast<std::uint32_t>(c - '@');
+}
+
+std::vector<std::string> auxiliaryLines() {
+  namespace ais = asv::ais;
+  const auto lat = [](double deg) { return static_cast<std::uint32_t>(ais::rawLat(deg)); };
+  const auto lon = [](double deg) { return static_cast<std::uint32_t>(ais::rawLon(deg)); };
+  // Type 21: aid 992611234 "BUOY", port hand mark (24), at 54.605 N 18.81 E, real, on position.
+  std::vector<std::tuple<std::size_t, int, std::uint32_t>> aid = {
+      {0, 6, 21}, {8, 30, 992611234}, {38, 5, 24}, {164, 28, lon(18.81)}, {192, 27, lat(54.605)}};
+  const std::string name = "BUOY";
+  for (std::size_t k = 0; k < 20; ++k)
+    aid.emplace_back(43 + 6 * k, 6, sixbit(k < name.size() ? name[k] : ' '));
+  // Type 9: SAR aircraft 111232511 at 54.62 N 18.83 E, 300 m, 100 kn, course 90.0.
+  const std::string sar = sentenceWith(168, {{0, 6, 9},
+                                             {8, 30, 111232511},
+                                             {38, 12, 300},
+                                             {50, 10, 100},
+                                             {61, 28, lon(18.83)},
+                                             {89, 27, lat(54.62)},
+                                             {116, 12, 900}});
+  // Type 14 from 244123456: "SAFETY".
+  std::vector<std::tuple<std::size_t, int, std::uint32_t>> text = {{0, 6, 14}, {8, 30, 244123456}};
+  const std::string words = "SAFETY";
+  for (std::size_t k = 0; k < words.size(); ++k)
+    text.emplace_back(40 + 6 * k, 6, sixbit(words[k]));
+  // Type 8 DAC 1 FID 31 from 2300061 at 54.615 N 18.81 E (1/1000 min): wind 17 kn from 132 deg,
+  // gust 20 kn, air 1.4 degC (14), 1013 hPa (214 + 799), visibility 3.5 NM (35), water level 5.38 m
+  // (1538 / 100 - 10), sea state 4 Beaufort.
+  const std::string weather = sentenceWith(360, {{0, 6, 8},
+                                                 {8, 30, 2300061},
+                                                 {40, 10, 1},
+                                                 {50, 6, 31},
+                                                 {56, 25, 1128600},
+                                                 {81, 24, 3276900},
+                                                 {122, 7, 17},
+                                                 {129, 7, 20},
+                                                 {136, 9, 132},
+                                                 {154, 11, 14},
+                                                 {182, 9, 214},
+                                                 {194, 7, 35},
+                                                 {201, 12, 1538},
+                                                 {322, 4, 4}});
+  return {sentenceWith(272, aid), sar, sentenceWith(40 + 6 * words.size(), text), weather};
+}
+
 class AisNodeTest : public ::testing::Test {
 protected:
   void SetUp() override {
     ros::NodeHandle("~").param<std::string>("mode", mode_, "udp");
     targets_sub_ = nh_.subscribe("ais/targets", 100, &AisNodeTest::targetsCb, this);
+    aids_sub_ = nh_.subscribe<asv_msgs::AidToNavigationArray>(
+        "ais/aids_to_navigation", 10, [this](const asv_msgs::AidToNavigationArray::ConstPtr& m) { aids_ = *m; });
+    sar_sub_ = nh_.subscribe<asv_msgs::TargetArray>("ais/sar_aircraft", 10, [this](const asv_msgs::TargetArray::ConstPtr& m) {
+      for (const auto& t : m->targets)
+        sar_[t.mmsi] = t;
+    });
+    safety_sub_ = nh_.subscribe<asv_msgs::AisSafetyMessage>(
+        "ais/safety_messages", 10, [this](const asv_msgs::AisSafetyMessage::ConstPtr& m) { safety_ = m; });
+    weather_sub_ = nh_.subscribe<asv_msgs::AisWeather>(
+        "ais/weather", 10, [this](const asv_msgs::AisWeather::ConstPtr& m) { weather_ = m; });
     raw_sub_ = nh_.subscribe("nmea", 1000, &AisNodeTest::rawCb, this);
     if (mode_ == "topic")
       nmea_pub_ = nh_.advertise<asv_msgs::NmeaSentence>("nmea_in", 1000);
@@ -141,7 +219,11 @@ protected:
 
   ros::NodeHandle nh_;
   std::string mode_;
-  ros::Subscriber targets_sub_, raw_sub_;
+  ros::Subscriber targets_sub_, raw_sub_, aids_sub_, sar_sub_, safety_sub_, weather_sub_;
+  asv_msgs::AidToNavigationArray aids_;
+  std::map<std::uint32_t, asv_msgs::Target> sar_;
+  asv_msgs::AisSafetyMessage::ConstPtr safety_;
+  asv_msgs::AisWeather::ConstPtr weather_;
   ros::Publisher nmea_pub_;
   int sock_ = -1;
   std::map<std::uint32_t, asv_msgs::Target> latest_;
@@ -215,6 +297,64 @@ TEST_F(AisNodeTest, SentencesBecomeTargetsInTheMapFrame) {
   } else {
     EXPECT_EQ(raw_count_, 0) << "topic input is not republished";
   }
+}
+
+TEST_F(AisNodeTest, AidsSarTextsAndWeatherOnTheirOwnTopics) {
+  const std::vector<std::string> lines = auxiliaryLines();
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(15.0);
+  while (ros::ok() && ros::WallTime::now() < deadline &&
+         !(aids_.aids.size() == 1 && sar_.count(111232511) && safety_ && weather_)) {
+    send(lines);
+    const ros::WallTime next = ros::WallTime::now() + ros::WallDuration(0.5);
+    while (ros::WallTime::now() < next) {
+      ros::spinOnce();
+      ros::WallDuration(0.01).sleep();
+    }
+  }
+  const asv::LocalFrame frame(54.60, 18.80);
+  ASSERT_EQ(aids_.aids.size(), 1u) << "no aid on ais/aids_to_navigation";
+  EXPECT_EQ(aids_.header.frame_id, "map");
+  const asv_msgs::AidToNavigation& a = aids_.aids[0];
+  EXPECT_EQ(a.mmsi, 992611234u);
+  EXPECT_EQ(a.name, "BUOY");
+  EXPECT_EQ(a.aid_type, 24);
+  EXPECT_EQ(a.aid_type_text, "Port hand Mark");
+  EXPECT_FALSE(a.virtual_aid);
+  EXPECT_FALSE(a.off_position);
+  const Eigen::Vector2d pa = frame.toLocal(54.605, 18.81);
+  EXPECT_NEAR(a.position.x, pa.x(), 0.2);
+  EXPECT_NEAR(a.position.y, pa.y(), 0.2);
+
+  ASSERT_TRUE(sar_.count(111232511)) << "no SAR aircraft on ais/sar_aircraft";
+  const asv_msgs::Target& s = sar_[111232511];
+  EXPECT_EQ(s.id, "sar:111232511");
+  EXPECT_DOUBLE_EQ(s.position.z, 300.0);  // the altitude
+  EXPECT_NEAR(s.speed_over_ground, 100 * 1852.0 / 3600.0, 1e-9);  // whole knots
+  EXPECT_NEAR(s.course_over_ground, 90.0 * kDeg, 1e-9);
+  EXPECT_FALSE(latest_.count(111232511)) << "a SAR aircraft is not a collision target";
+
+  ASSERT_TRUE(safety_) << "no text on ais/safety_messages";
+  EXPECT_EQ(safety_->message_type, 14);
+  EXPECT_EQ(safety_->mmsi, 244123456u);
+  EXPECT_EQ(safety_->text, "SAFETY");
+
+  ASSERT_TRUE(weather_) << "no report on ais/weather";
+  const asv_msgs::AisWeather& w = *weather_;
+  EXPECT_EQ(w.mmsi, 2300061u);
+  ASSERT_TRUE(w.has_position);
+  const Eigen::Vector2d pw = frame.toLocal(54.615, 18.81);
+  EXPECT_NEAR(w.position.x, pw.x(), 1.0);
+  EXPECT_NEAR(w.position.y, pw.y(), 1.0);
+  ASSERT_TRUE(w.has_wind && w.has_wind_gust);
+  EXPECT_NEAR(w.wind_speed, 17 * 1852.0 / 3600.0, 1e-9);
+  EXPECT_NEAR(w.wind_gust, 20 * 1852.0 / 3600.0, 1e-9);
+  EXPECT_NEAR(w.wind_direction, 132.0 * kDeg, 1e-9);
+  ASSERT_TRUE(w.has_visibility);
+  EXPECT_NEAR(w.visibility, 3.5 * 1852.0, 1e-6);
+  EXPECT_NEAR(w.air_temperature, 1.4, 1e-9);
+  EXPECT_NEAR(w.air_pressure, 101300.0, 1e-6);
+  EXPECT_EQ(w.sea_state, 4);
+  EXPECT_NEAR(w.water_level, 5.38, 1e-9);
 }
 
 }  // namespace

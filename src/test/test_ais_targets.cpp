@@ -134,3 +134,89 @@ TEST(AisTargets, SpanSecondsRoundsAsRosDurations) {
   EXPECT_EQ(spanSeconds(-1500000000), -2.0 + 0.5);  // sec -2, nsec 500 000 000
   EXPECT_NEAR(spanSeconds(-1), -1e-9, 1e-16);       // sec -1, nsec 999 999 999: rounded as -1 + 0.999999999
 }
+
+namespace {
+ais::Message aid(std::uint32_t mmsi, double lat, double lon, bool virtual_aid) {
+  ais::AidToNavigation a;
+  a.aid_type = 24;  // port hand mark
+  a.name.assign("BUOY 7");
+  a.lat = static_cast<std::int32_t>(lat * 600000.0);
+  a.lon = static_cast<std::int32_t>(lon * 600000.0);
+  a.virtual_aid = virtual_aid;
+  a.to_bow = a.to_stern = 1;
+  ais::Message m;
+  m.type = 21;
+  m.mmsi = mmsi;
+  m.body = a;
+  return m;
+}
+
+ais::Message sarAircraft(std::uint32_t mmsi, std::uint32_t alt, std::uint32_t speed_kn) {
+  ais::SarAircraftReport r;
+  r.alt = alt;
+  r.speed = speed_kn;
+  r.course = 900;  // 90.0 deg
+  r.lat = static_cast<std::int32_t>(kLat * 600000.0);
+  r.lon = static_cast<std::int32_t>(kLon * 600000.0);
+  ais::Message m;
+  m.type = 9;
+  m.mmsi = mmsi;
+  m.body = r;
+  return m;
+}
+}  // namespace
+
+TEST(AisTargets, SarAircraftAreKeptApartFromShips) {
+  // The ships' table refuses an aircraft; a table made for them keeps it, with its altitude and its
+  // speed in whole knots (ITU-R M.1371 message 9: 100 kn = 51.44 m/s).
+  AisTargetTable ships = table();
+  EXPECT_EQ(ships.update(sarAircraft(111232511, 300, 100), 0), AisOutcome::NotAShip);
+  AisTargetConfig c;
+  c.sar_aircraft = true;
+  AisTargetTable sar(c, LocalFrame(kLat, kLon));
+  EXPECT_EQ(sar.update(classA(366000001, 100, 900, 511), 0), AisOutcome::NotAShip);
+  ASSERT_EQ(sar.update(sarAircraft(111232511, 300, 100), 0), AisOutcome::Target);
+  const std::vector<AisTarget> d = due(sar, 1 * kSec);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].ais_class, 'S');
+  EXPECT_TRUE(d[0].has_altitude);
+  EXPECT_DOUBLE_EQ(d[0].altitude, 300.0);
+  EXPECT_NEAR(d[0].speed, 100.0 * 1852.0 / 3600.0, 1e-9);
+  EXPECT_NEAR(d[0].course, M_PI / 2, 1e-9);
+  // Altitude 4095: not available.
+  sar.update(sarAircraft(111232512, 4095, 100), 2 * kSec);
+  const std::vector<AisTarget> d2 = due(sar, 3 * kSec);
+  ASSERT_EQ(d2.size(), 1u);
+  EXPECT_FALSE(d2[0].has_altitude);
+}
+
+TEST(AisTargets, AidsToNavigationAreRememberedForgottenAndRefused) {
+  AidTableConfig c;
+  c.max_aids = 2;
+  c.forget_after = 600.0;
+  AidTable t(c, LocalFrame(kLat, kLon));
+  // 0.01 deg north of the origin: 1110 m on the WGS84 ellipsoid at 40.7 N (111.03 km per degree).
+  ASSERT_EQ(t.update(aid(992611001, kLat + 0.01, kLon, false), 10 * kSec), AisOutcome::Target);
+  const AidRecord& a = t.aids().at(992611001);
+  EXPECT_NEAR(a.position.x(), 0.0, 0.1);
+  EXPECT_NEAR(a.position.y(), 1110.3, 1.0);
+  EXPECT_EQ(a.name, "BUOY 7");
+  EXPECT_EQ(a.aid_type, 24);
+  EXPECT_DOUBLE_EQ(a.to_bow + a.to_stern, 2.0);
+  EXPECT_EQ(t.update(aid(992611002, kLat, kLon + 0.01, true), 20 * kSec), AisOutcome::Target);
+  EXPECT_TRUE(t.aids().at(992611002).virtual_aid);
+  // A third aid evicts the least recently heard.
+  EXPECT_EQ(t.update(aid(992611003, kLat, kLon, false), 30 * kSec), AisOutcome::Target);
+  EXPECT_EQ(t.size(), 2u);
+  EXPECT_EQ(t.evicted(), 1u);
+  EXPECT_FALSE(t.aids().count(992611001));
+  // forget_after 600 s: the aid heard at 20 s is gone at 621 s, the one at 30 s is not.
+  t.forget(621 * kSec);
+  EXPECT_EQ(t.size(), 1u);
+  EXPECT_TRUE(t.aids().count(992611003));
+  // Refused: no position (lat 91), invalid MMSI, beyond max_range, and a ship's report.
+  EXPECT_EQ(t.update(aid(992611004, 91.0, kLon, false), 0), AisOutcome::NoPosition);
+  EXPECT_EQ(t.update(aid(0, kLat, kLon, false), 0), AisOutcome::BadMmsi);
+  EXPECT_EQ(t.update(aid(992611005, kLat + 2.5, kLon, false), 0), AisOutcome::OutOfRange);
+  EXPECT_EQ(t.update(classA(366000001, 100, 900, 511), 0), AisOutcome::NotAShip);
+}

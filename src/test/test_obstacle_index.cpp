@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "asv_core/common/obstacle_index.h"
+#include "asv_core/planning/planning.h"
 
 namespace {
 
@@ -62,3 +63,24 @@ TEST(ObstacleIndex, AgreesWithTheLinearScansOnRandomCoasts) {
 }
 
 }  // namespace
+
+TEST(PointHazard, AnAidIsAnOctagonRoundItsClearanceCircle) {
+  // aid_clearance 300 m with min_obstacle_clearance_m 185.2 m: the octagon has an inscribed radius
+  // of 114.8 m, so a plan kept 185.2 m off it stays at least 300 m from the aid.
+  const double r = asv::pointHazardRadius(300.0, 185.2);
+  EXPECT_NEAR(r, 114.8, 1e-9);
+  EXPECT_DOUBLE_EQ(asv::pointHazardRadius(100.0, 185.2), 0.0);  // land's clearance is the larger
+  const Eigen::Vector2d c(1000.0, 2000.0);
+  const asv::StaticObstacle o = asv::pointHazard("aid:1", c, r);
+  ASSERT_EQ(o.polygon.size(), 8u);
+  for (const auto& v : o.polygon)  // vertices at r / cos(22.5 deg)
+    EXPECT_NEAR((v - c).norm(), r / std::cos(M_PI / 8), 1e-9);
+  EXPECT_TRUE(asv::insideObstacle(o, c));
+  EXPECT_TRUE(asv::insideObstacle(o, c + Eigen::Vector2d(0.0, r - 0.01)));  // the circle is inside
+  EXPECT_FALSE(asv::insideObstacle(o, c + Eigen::Vector2d(0.0, r / std::cos(M_PI / 8) + 0.01)));
+  // A leg passing 300 m from the aid is 185.2 m from the octagon at least (here: at an edge's middle).
+  const double d = asv::obstacleDistance(o, c + Eigen::Vector2d(-5000.0, 300.0), c + Eigen::Vector2d(5000.0, 300.0));
+  EXPECT_NEAR(d, 300.0 - r, 1e-6);
+  // Radius 0 still gives a point an inside (1 m).
+  EXPECT_TRUE(asv::insideObstacle(asv::pointHazard("aid:2", c, 0.0), c + Eigen::Vector2d(0.5, 0.0)));
+}

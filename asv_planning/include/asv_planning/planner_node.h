@@ -2,7 +2,8 @@
 //
 // Subscribes: odom (nav_msgs/Odometry, own ship), risk (asv_msgs/RiskAssessment), targets
 //   (asv_msgs/TargetArray), goal (geometry_msgs/PoseStamped, optional: replaces the configured goal),
-//   alarms (asv_msgs/Alarm: the upstream nodes' alarms)
+//   alarms (asv_msgs/Alarm: the upstream nodes' alarms), aids_to_navigation
+//   (asv_msgs/AidToNavigationArray from ais_node, when use_aids: hazards the plans keep clear of)
 // Publishes: plan (asv_msgs/Plan), path (nav_msgs/Path), cmd (asv_msgs/CourseSpeedSetpoint),
 //   plan_markers (visualization_msgs/MarkerArray), alarms (asv_msgs/Alarm, latched: its inputs lost and
 //   the degraded action), /diagnostics
@@ -18,6 +19,7 @@
 #include <asv_core/planning/plan_follower.h>
 #include <asv_core/planning/planner_node_config.h>
 #include <asv_core/planning/planning.h>
+#include <asv_msgs/AidToNavigationArray.h>
 #include <asv_msgs/Alarm.h>
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
@@ -43,6 +45,10 @@ private:
   void riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg);
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
   void goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg);
+  // Aids to navigation become point hazards of the plans (use_aids, aid_clearance).
+  void aidsCallback(const asv_msgs::AidToNavigationArray::ConstPtr& msg);
+  // The scenario's obstacles and the aids' hazards, as the plan follower gets them.
+  std::vector<asv::StaticObstacle> allObstacles() const;
   asv::ParamMap applyScenario();
   void start();
   void timerCallback();
@@ -67,8 +73,9 @@ private:
   asv::PlannerNodeConfig params_;  // follower: as loaded (the plan follower gets followerConfig())
   PluginLoader loader_;
   pluginlib::UniquePtr<PlannerPlugin> plugin_;
-  std::vector<asv::StaticObstacle> obstacles_;
-  ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_;
+  std::vector<asv::StaticObstacle> obstacles_;      // the scenario's (land, structures)
+  std::vector<asv::StaticObstacle> aid_obstacles_;  // one per aid to navigation
+  ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_, aids_sub_;
   ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_;
   diagnostic_updater::Updater updater_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kPlanning};

@@ -4,7 +4,9 @@
 // Publishes:  nmea (asv_msgs/NmeaSentence, every line read from a device), ais/targets
 //             (asv_msgs/TargetArray in the local ENU frame of origin_lat_deg/origin_lon_deg: each array
 //             holds the ships reported since the previous one, static and voyage data merged per MMSI;
-//             an empty one every heartbeat_period when none was), /diagnostics
+//             an empty one every heartbeat_period when none was), /diagnostics; and the messages that
+//             are not ship targets (aids to navigation, SAR aircraft, safety texts, weather):
+//             see ais_auxiliary.h
 // Parameters: see config/ais_node.yaml (every key documented there).
 #pragma once
 
@@ -22,6 +24,7 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 
+#include "asv_risk/ais_auxiliary.h"
 #include "asv_risk/nmea_input.h"
 #include "asv_risk/params.h"
 
@@ -63,6 +66,7 @@ private:
   asv::ais::Message message_;
   asv::ais::StaticStore store_;
   asv::AisTargetTable table_;
+  AisAuxiliary aux_;
   ros::Publisher targets_pub_;
   ros::Timer diag_timer_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kIngestion};  // before input_, which subscribes through it

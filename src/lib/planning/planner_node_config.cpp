@@ -17,6 +17,8 @@ void PlannerNodeConfig::validate() const {
     throw std::invalid_argument("stale_after must be > 0 s");
   if (!goal.allFinite())
     throw std::invalid_argument("goal_x and goal_y must be finite");
+  if (!(aid_clearance >= 0 && aid_clearance <= 5000))
+    throw std::invalid_argument("aid_clearance must be in [0, 5000] m");
   follower.validate();
 }
 
@@ -40,6 +42,8 @@ PlannerNodeConfig PlannerNodeConfig::fromParams(const ParamMap& p) {
   c.follower = PlanFollowerConfig::fromParams(p);
   c.watch = InputWatchConfig::fromParams(p);
   c.upstream_nodes = p.getStringList("watch/upstream_nodes", c.upstream_nodes);
+  c.use_aids = p.getBool("use_aids", c.use_aids);
+  c.aid_clearance = p.getDouble("aid_clearance", c.aid_clearance);
   c.validate();
   return c;
 }

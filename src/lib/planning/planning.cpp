@@ -1,6 +1,7 @@
 #include "asv_core/planning/planning.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace asv {
@@ -28,6 +29,24 @@ PlannerTarget toPlannerTarget(const ShipState& target, const TargetRisk& r) {
   t.tcpa = r.cpa.tcpa;
   t.dcpa = r.cpa.dcpa;
   return t;
+}
+
+StaticObstacle pointHazard(const std::string& name, const Eigen::Vector2d& centre, double radius) {
+  constexpr int kSides = 8;
+  constexpr double kMinRadius = 1.0;  // [m] a point still has an inside
+  // A regular polygon whose edges touch the circle: its vertices are r / cos(pi / n) from the centre.
+  const double r = std::max(radius, kMinRadius) / std::cos(M_PI / kSides);
+  StaticObstacle o;
+  o.name = name;
+  for (int k = 0; k < kSides; ++k) {
+    const double a = 2.0 * M_PI * (k + 0.5) / kSides;
+    o.polygon.push_back(centre + r * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  return o;
+}
+
+double pointHazardRadius(double clearance, double min_obstacle_clearance) {
+  return std::max(0.0, clearance - min_obstacle_clearance);
 }
 
 void indexObstacles(std::vector<StaticObstacle>& obstacles) {

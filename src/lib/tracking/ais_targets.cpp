@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <variant>
 
@@ -16,6 +18,16 @@ constexpr double kLongRangeSigma = 200.0;
 // The class, position sigma and navigational status of a ship's position report; false for a message
 // that is not one.
 bool reportKind(const ais::Message& m, const AisTargetConfig& cfg, AisTarget& t) {
+  if (cfg.sar_aircraft) {
+    const auto* r = std::get_if<ais::SarAircraftReport>(&m.body);
+    if (!r)
+      return false;
+    t.ais_class = 'S';
+    t.sigma = r->accuracy ? cfg.position_sigma_high : cfg.position_sigma_low;
+    t.has_altitude = r->alt < 4095;  // 4095: not available
+    t.altitude = t.has_altitude ? static_cast<double>(r->alt) : 0.0;
+    return true;
+  }
   if (const auto* a = std::get_if<ais::PositionReportA>(&m.body)) {
     t.ais_class = 'A';
     t.sigma = a->accuracy ? cfg.position_sigma_high : cfg.position_sigma_low;
@@ -75,7 +87,9 @@ AisOutcome AisTargetTable::update(const ais::Message& m, std::int64_t stamp_ns) 
   if (m.own_ship)  // AIVDO: our own transponder, not a target
     return AisOutcome::OwnShip;
   AisTarget t;
-  if (!reportKind(m, cfg_, t))  // static data (5, 24), base stations (4), aids to navigation (21)
+  // Static data (5, 24), base stations (4), aids to navigation (21), SAR aircraft (9) unless this is
+  // their table, and the rest.
+  if (!reportKind(m, cfg_, t))
     return AisOutcome::NotAShip;
   ais::Kinematics k;
   if (!ais::toKinematics(m, k) || !k.has_position)
@@ -112,6 +126,59 @@ double spanSeconds(std::int64_t ns) {
     --sec;
   }
   return static_cast<double>(sec) + 1e-9 * static_cast<double>(nsec);
+}
+
+void AidTableConfig::validate() const {
+  if (!(max_range > 0.0))
+    throw std::invalid_argument("aids/max_range must be > 0 m");
+  if (max_aids < 1)
+    throw std::invalid_argument("aids/max_aids must be >= 1");
+  if (!(forget_after > 0.0))
+    throw std::invalid_argument("aids/forget_after must be > 0 s");
+}
+
+AidTable::AidTable(const AidTableConfig& cfg, const LocalFrame& frame) : cfg_(cfg), frame_(frame) {
+  cfg_.validate();
+}
+
+AisOutcome AidTable::update(const ais::Message& m, std::int64_t stamp_ns) {
+  const auto* a = std::get_if<ais::AidToNavigation>(&m.body);
+  if (!a)
+    return AisOutcome::NotAShip;
+  const std::optional<double> lat = ais::latDeg(a->lat), lon = ais::lonDeg(a->lon);
+  if (!lat || !lon)
+    return AisOutcome::NoPosition;
+  if (m.mmsi == 0 || m.mmsi > kMaxMmsi)
+    return AisOutcome::BadMmsi;
+  AidRecord r;
+  r.position = frame_.toLocal(*lat, *lon);
+  if (!(r.position.allFinite() && r.position.norm() <= cfg_.max_range))
+    return AisOutcome::OutOfRange;
+  r.mmsi = m.mmsi;
+  r.name = std::string(a->name.view());
+  r.aid_type = a->aid_type;
+  r.virtual_aid = a->virtual_aid;
+  r.off_position = a->off_position;
+  r.lat_deg = *lat;
+  r.lon_deg = *lon;
+  r.to_bow = a->to_bow;
+  r.to_stern = a->to_stern;
+  r.to_port = a->to_port;
+  r.to_starboard = a->to_starboard;
+  r.stamp_ns = stamp_ns;
+  if (!aids_.count(m.mmsi) && aids_.size() >= cfg_.max_aids) {
+    aids_.erase(std::min_element(aids_.begin(), aids_.end(), [](const auto& x, const auto& y) {
+      return x.second.stamp_ns < y.second.stamp_ns;
+    }));
+    ++evicted_;
+  }
+  aids_[m.mmsi] = std::move(r);
+  return AisOutcome::Target;
+}
+
+void AidTable::forget(std::int64_t now_ns) {
+  for (auto it = aids_.begin(); it != aids_.end();)
+    it = spanSeconds(now_ns - it->second.stamp_ns) > cfg_.forget_after ? aids_.erase(it) : std::next(it);
 }
 
 }  // namespace asv

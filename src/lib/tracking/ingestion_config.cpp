@@ -52,6 +52,9 @@ void AisNodeConfig::validate() const {
   decoder.validate();
   if (max_static < 1)
     throw std::invalid_argument("max_static must be >= 1");
+  aids.validate();
+  if (!(aids_period > 0.0 && aids_period <= 60.0))
+    throw std::invalid_argument("aids/publish_period must be in (0, 60] s");
 }
 
 AisNodeConfig AisNodeConfig::fromParams(const ParamMap& p) {
@@ -63,6 +66,11 @@ AisNodeConfig AisNodeConfig::fromParams(const ParamMap& p) {
   c.decoder.fragment_timeout = p.getDouble("fragment_timeout", c.decoder.fragment_timeout);
   c.decoder.max_pending = p.getSize("max_pending", c.decoder.max_pending, 1);
   c.max_static = p.getSize("max_static", c.max_static, 1);
+  c.aids.max_range = c.targets.max_range;
+  c.aids.max_aids = p.getSize("aids/max_aids", c.aids.max_aids, 1);
+  c.aids.forget_after = p.getDouble("aids/forget_after", c.aids.forget_after);
+  c.aids_period = p.getDouble("aids/publish_period", c.aids_period);
+  c.publish_markers = p.getBool("publish_markers", c.publish_markers);
   c.validate();
   return c;
 }

@@ -33,6 +33,11 @@ struct PlannerNodeConfig {
   // watch/upstream_nodes: nodes (by name, any namespace) whose ERROR alarm on `alarms` means the
   // picture is incomplete: degraded operation as for a stale input
   std::vector<std::string> upstream_nodes{"tracker", "risk_node"};
+  // Aids to navigation (AIS message 21, aids_to_navigation): static hazards every plan keeps at least
+  // max(aid_clearance, min_obstacle_clearance_m) from. 185.2 m (a cable) by default: a buoy or beacon
+  // stands on shoal water.
+  bool use_aids = true;
+  double aid_clearance = 185.2;  // [m]
 
   // Throws std::invalid_argument naming the first value out of range.
   void validate() const;

@@ -41,6 +41,15 @@ struct StaticObstacle {
   std::shared_ptr<const ObstacleIndex> index = nullptr;
 };
 
+// A point hazard (an aid to navigation) as an obstacle: the octagon round the circle of `radius` [m]
+// about `centre`, so that a plan keeping min_obstacle_clearance_m from the octagon keeps at least
+// radius + min_obstacle_clearance_m from the centre. The circle's radius is that of a point for
+// radius 0 (a 1 m octagon).
+StaticObstacle pointHazard(const std::string& name, const Eigen::Vector2d& centre, double radius);
+// The radius giving a point hazard a clearance of at least `clearance` when plans keep
+// `min_obstacle_clearance` from obstacles: clearance - min_obstacle_clearance, never below 0.
+double pointHazardRadius(double clearance, double min_obstacle_clearance);
+
 // Polygons of at least this many vertices get an index: below it a scan is as fast (bench_land).
 constexpr size_t kIndexedObstacleVertices = 64;
 // Builds the index of every obstacle of kIndexedObstacleVertices or more vertices that has none.

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <string>
 #include <unordered_map>
 
 #include <Eigen/Core>
@@ -20,7 +22,10 @@ struct AisTargetConfig {
   double forget_after = 900.0;        // [s] a ship not heard for this long is forgotten
   double position_sigma_high = 10.0;  // [m] 1-sigma of a fix with the accuracy flag set (DGNSS)
   double position_sigma_low = 30.0;   // [m] 1-sigma of a fix without it (GNSS)
-  void validate() const;              // std::invalid_argument naming the first bad field
+  // Keep SAR aircraft (type 9) instead of ships: they are shown, never collision targets, so the
+  // node keeps them in a table of their own.
+  bool sar_aircraft = false;
+  void validate() const;  // std::invalid_argument naming the first bad field
 };
 
 // Where a target's velocity comes from. AIS gives course and speed over ground; without a course the
@@ -30,7 +35,7 @@ enum class AisVelocity : std::uint8_t { Reported, CourseFromHeading, Unknown };
 
 struct AisTarget {
   std::uint32_t mmsi = 0;
-  char ais_class = 'A';          // 'A' (types 1-3 and 27) or 'B' (18, 19)
+  char ais_class = 'A';          // 'A' (types 1-3 and 27), 'B' (18, 19) or 'S' (SAR aircraft, 9)
   std::uint8_t nav_status = 15;  // ITU-R M.1371 navigational status; 15: not defined (class B)
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] map frame
   double lat_deg = 0.0, lon_deg = 0.0;
@@ -41,6 +46,8 @@ struct AisTarget {
   bool has_turn = false;
   double rate_of_turn = 0.0;  // [rad/s] positive clockwise
   double sigma = 0.0;         // [m] 1-sigma of the position, either axis
+  bool has_altitude = false;  // SAR aircraft only
+  double altitude = 0.0;      // [m] above sea level; 4094 means 4094 m or higher
   std::int64_t stamp_ns = 0;  // receive time of the report
   bool updated = false;       // reported since the last due()
 };
@@ -99,5 +106,51 @@ template <class F>
 void AisTargetTable::due(std::int64_t now_ns, F f) {
   dueTargets(ships_, now_ns, cfg_.forget_after, f);
 }
+
+// ---- Aids to navigation (message 21) ----
+
+// A fixed or floating mark, or a virtual one (no physical mark: a wreck or a danger marked by AIS
+// only), that a ship keeps clear of.
+struct AidRecord {
+  std::uint32_t mmsi = 0;
+  std::string name;  // trimmed
+  std::uint8_t aid_type = 0;  // ITU-R M.1371 table (ais::aidTypeText)
+  bool virtual_aid = false;
+  bool off_position = false;  // a floating aid reporting itself off its charted position
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] map frame
+  double lat_deg = 0.0, lon_deg = 0.0;
+  double to_bow = 0.0, to_stern = 0.0, to_port = 0.0, to_starboard = 0.0;  // [m], 0 = unknown
+  std::int64_t stamp_ns = 0;  // receive time of the last report
+};
+
+struct AidTableConfig {
+  double max_range = 200000.0;  // [m] aids farther from the map origin are refused
+  std::size_t max_aids = 2000;  // aids remembered; a new one evicts the least recently heard
+  // [s] an aid not heard for this long is forgotten. Aids report every 3 minutes (ITU-R M.1371); a
+  // missed report or two must not make a mark vanish.
+  double forget_after = 1800.0;
+  void validate() const;
+};
+
+class AidTable {
+public:
+  AidTable(const AidTableConfig& cfg, const LocalFrame& frame);
+  // A message 21 received at stamp_ns updates its aid (AisOutcome::Target); other messages are
+  // NotAShip; a report without a position, with an invalid MMSI or beyond max_range is refused.
+  AisOutcome update(const ais::Message& m, std::int64_t stamp_ns);
+  // Forgets the aids not heard for forget_after at now_ns.
+  void forget(std::int64_t now_ns);
+  // Every aid known, by MMSI (a stable order for publishing).
+  const std::map<std::uint32_t, AidRecord>& aids() const { return aids_; }
+  std::size_t size() const { return aids_.size(); }
+  std::uint64_t evicted() const { return evicted_; }
+  void clear() { aids_.clear(); }
+
+private:
+  AidTableConfig cfg_;
+  LocalFrame frame_;
+  std::map<std::uint32_t, AidRecord> aids_;
+  std::uint64_t evicted_ = 0;
+};
 
 }  // namespace asv

@@ -44,6 +44,9 @@ struct AisNodeConfig : IngestionConfig {
   AisTargetConfig targets;  // max_range, max_targets (5000), forget_after (900 s), position sigmas
   ais::DecoderConfig decoder;      // fragment_timeout, max_pending
   std::size_t max_static = 10000;  // ships whose static data is remembered
+  AidTableConfig aids;             // aids/max_aids, aids/forget_after; max_range is the ships' one
+  double aids_period = 1.0;        // [s] aids/publish_period: the whole list of aids this often
+  bool publish_markers = true;     // ais/markers: aids and SAR aircraft for rviz
 
   void validate() const;
   static AisNodeConfig fromParams(const ParamMap& params);
