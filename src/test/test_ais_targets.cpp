@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "asv_core/tracking/ais_targets.h"
@@ -219,4 +220,17 @@ TEST(AisTargets, AidsToNavigationAreRememberedForgottenAndRefused) {
   EXPECT_EQ(t.update(aid(0, kLat, kLon, false), 0), AisOutcome::BadMmsi);
   EXPECT_EQ(t.update(aid(992611005, kLat + 2.5, kLon, false), 0), AisOutcome::OutOfRange);
   EXPECT_EQ(t.update(classA(366000001, 100, 900, 511), 0), AisOutcome::NotAShip);
+}
+
+TEST(AisTargets, TheOwnShipsAivdmIsNoTarget) {
+  // own_mmsi: a shore log replayed with one of its vessels as the own ship; her AIVDM reports are
+  // hers, as AIVDO would be; the others stay targets.
+  AisTargetConfig c;
+  c.own_mmsi = 367782880;
+  AisTargetTable t(c, LocalFrame(kLat, kLon));
+  EXPECT_EQ(t.update(classA(367782880, 176, 900, 511), 0), AisOutcome::OwnShip);
+  EXPECT_EQ(t.update(classA(366999618, 190, 900, 511), 0), AisOutcome::Target);
+  EXPECT_EQ(t.size(), 1u);
+  c.own_mmsi = 1000000000;  // ten digits: not an MMSI
+  EXPECT_THROW(c.validate(), std::invalid_argument);
 }

@@ -76,6 +76,8 @@ void AisTargetConfig::validate() const {
     throw std::invalid_argument("forget_after must be > 0 s");
   if (!(position_sigma_high > 0.0 && position_sigma_low > 0.0))
     throw std::invalid_argument("position_sigma_high and position_sigma_low must be > 0 m");
+  if (own_mmsi > kMaxMmsi)
+    throw std::invalid_argument("own_mmsi must have at most 9 digits");
 }
 
 AisTargetTable::AisTargetTable(const AisTargetConfig& cfg, const LocalFrame& frame)
@@ -84,7 +86,7 @@ AisTargetTable::AisTargetTable(const AisTargetConfig& cfg, const LocalFrame& fra
 }
 
 AisOutcome AisTargetTable::update(const ais::Message& m, std::int64_t stamp_ns) {
-  if (m.own_ship)  // AIVDO: our own transponder, not a target
+  if (m.own_ship || (cfg_.own_mmsi != 0 && m.mmsi == cfg_.own_mmsi))  // our own transponder
     return AisOutcome::OwnShip;
   AisTarget t;
   // Static data (5, 24), base stations (4), aids to navigation (21), SAR aircraft (9) unless this is

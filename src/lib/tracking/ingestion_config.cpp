@@ -63,6 +63,7 @@ AisNodeConfig AisNodeConfig::fromParams(const ParamMap& p) {
   readTableLimits(p, c.targets.max_range, c.targets.max_targets, c.targets.forget_after);
   c.targets.position_sigma_high = p.getDouble("position_sigma_high", c.targets.position_sigma_high);
   c.targets.position_sigma_low = p.getDouble("position_sigma_low", c.targets.position_sigma_low);
+  c.targets.own_mmsi = static_cast<std::uint32_t>(p.getSize("own_mmsi", c.targets.own_mmsi));
   c.decoder.fragment_timeout = p.getDouble("fragment_timeout", c.decoder.fragment_timeout);
   c.decoder.max_pending = p.getSize("max_pending", c.decoder.max_pending, 1);
   c.max_static = p.getSize("max_static", c.max_static, 1);

@@ -25,6 +25,9 @@ struct AisTargetConfig {
   // Keep SAR aircraft (type 9) instead of ships: they are shown, never collision targets, so the
   // node keeps them in a table of their own.
   bool sar_aircraft = false;
+  // The own ship's transponder: her AIVDM reports (a shore log replayed with one of its vessels as
+  // the own ship) are not a target, as AIVDO never is. 0: none.
+  std::uint32_t own_mmsi = 0;
   void validate() const;  // std::invalid_argument naming the first bad field
 };
 
