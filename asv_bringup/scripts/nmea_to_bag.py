@@ -14,7 +14,8 @@ INPUT is one of:
 Each sentence becomes one message stamped with its time (header.stamp, and the bag's record time), the
 line kept whole (tag block included) in `sentence`. A sentence before the first time in the file has no
 time and is dropped; one without its own time after that takes the last time seen (a multi-sentence
-message's later parts): both counted in the summary. Lines that hold no sentence are counted as skipped.
+message's later parts): both counted in the summary. Lines that hold no sentence, or a time column that is
+no time, are counted as skipped.
 
   --topic TOPIC    topic written (default /sim/nmea, what replay.launch plays)
   --frame-id ID    header.frame_id (default ais)
@@ -71,7 +72,10 @@ def split_line(line):
     if m and m.group(2).lstrip().startswith(("!", "$", "\\")):
         stamp = m.group(1)
         sentence = m.group(2).strip()
-        t = float(stamp) if re.fullmatch(r"[0-9.]+", stamp) else parse_utc(stamp)
+        try:
+            t = float(stamp) if re.fullmatch(r"[0-9.]+", stamp) else parse_utc(stamp)
+        except ValueError:  # a time column that is no time (month 13...): the line is skipped, counted
+            return None, None
         return t, sentence
     start = min([i for i in (line.find("!"), line.find("$"), line.find("\\")) if i >= 0], default=-1)
     return None, (line[start:] if start >= 0 else None)

@@ -80,12 +80,13 @@ class NmeaToBag(unittest.TestCase):
         self.assertIn("skipped 1", proc.stdout)
 
     def test_leading_time_column(self):
-        proc, msgs = convert("2020-06-30T00:00:05Z " + TYPE1 + "\n1593475206.5," + TYPE1 + "\n", "log.txt",
-                             "--topic", "/nmea")
+        proc, msgs = convert("2020-06-30T00:00:05Z " + TYPE1 + "\n2020-13-30T00:00:06Z " + TYPE1 + "\n1593475206.5," +
+                             TYPE1 + "\n", "log.txt", "--topic", "/nmea")
         self.assertEqual(proc.returncode, 0, proc.stdout)
         self.assertEqual([m.header.stamp.to_sec() for _, m, _ in msgs], [1593475205.0, 1593475206.5])
         self.assertEqual(msgs[0][0], "/nmea")
         self.assertEqual(msgs[0][1].sentence, TYPE1)
+        self.assertIn("skipped 1", proc.stdout)  # month 13: not a time, the line is not guessed
 
     def test_marine_cadastre_csv(self):
         header = ("BaseDateTime,LON,LAT,MMSI,SOG,COG,Heading,VesselName,IMO,CallSign,VesselType,Status,"

@@ -38,6 +38,19 @@ visualization_msgs::Marker marker(const std::string& frame, const ros::Time& now
   return m;
 }
 
+const char* outcomeText(asv::AisOutcome o) {
+  switch (o) {
+    case asv::AisOutcome::NoPosition:
+      return "no position";
+    case asv::AisOutcome::BadMmsi:
+      return "invalid MMSI";
+    case asv::AisOutcome::OutOfRange:
+      return "beyond max_range";
+    default:
+      return "not of its kind";
+  }
+}
+
 }  // namespace
 
 asv_msgs::Target aisTargetMsg(const asv::AisTarget& s) {
@@ -162,16 +175,21 @@ AisAuxiliary::AisAuxiliary(ros::NodeHandle nh, const asv::AisNodeConfig& config,
   }
 }
 
+void AisAuxiliary::refuse(const char* what, std::uint32_t mmsi, const char* why) {
+  ++refused_;
+  ROS_WARN_THROTTLE(10.0, "ais_node: %s MMSI %u refused (%s); counted in diagnostics", what, mmsi, why);
+}
+
 bool AisAuxiliary::handle(const asv::ais::Message& m, const asv::ais::Payload& p, const ros::Time& stamp) {
   const auto ns = static_cast<std::int64_t>(stamp.toNSec());
   if (std::holds_alternative<asv::ais::AidToNavigation>(m.body)) {
-    const bool stored = aids_.update(m, ns) == asv::AisOutcome::Target;
-    stored ? ++aid_reports_ : ++refused_;
+    const asv::AisOutcome o = aids_.update(m, ns);
+    o == asv::AisOutcome::Target ? void(++aid_reports_) : refuse("aid to navigation", m.mmsi, outcomeText(o));
     return true;
   }
   if (std::holds_alternative<asv::ais::SarAircraftReport>(m.body)) {
-    const bool stored = sar_.update(m, ns) == asv::AisOutcome::Target;
-    stored ? ++sar_reports_ : ++refused_;
+    const asv::AisOutcome o = sar_.update(m, ns);
+    o == asv::AisOutcome::Target ? void(++sar_reports_) : refuse("SAR aircraft", m.mmsi, outcomeText(o));
     return true;
   }
   if (const auto* t = std::get_if<asv::ais::SafetyText>(&m.body)) {
@@ -194,7 +212,7 @@ bool AisAuxiliary::handle(const asv::ais::Message& m, const asv::ais::Payload& p
 void AisAuxiliary::handleWeather(const asv::ais::Message& m, const asv::ais::Payload& p, const ros::Time& stamp) {
   asv::ais::MetHydroReport r;
   if (!asv::ais::decodeMetHydro31(p, r)) {
-    ++refused_;
+    refuse("weather report", m.mmsi, "shorter than the 350 bits of the IMO289 fields");
     return;
   }
   asv_msgs::AisWeather w = weatherMsg(m.mmsi, r, frame_);

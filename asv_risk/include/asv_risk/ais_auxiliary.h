@@ -55,6 +55,8 @@ public:
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) const;
 
 private:
+  // Counts and logs (throttled) a report that is not used.
+  void refuse(const char* what, std::uint32_t mmsi, const char* why);
   void handleWeather(const asv::ais::Message& m, const asv::ais::Payload& p, const ros::Time& stamp);
   void publishMarkers(const ros::Time& now);
 
