@@ -10,7 +10,10 @@ INPUT is one of:
   * an NMEA log with a leading time column: "<time> <sentence>" or "<time>,<sentence>", the time in UNIX
     seconds or UTC YYYY-MM-DDTHH:MM:SS[.fff][Z];
   * a decoded AIS log in MarineCadastre CSV columns (.csv): converted to AIVDM sentences with
-    asv_ais_csv_to_nmea first (types 1/18 and 5/24; --start and --duration are passed to it).
+    asv_ais_csv_to_nmea first (types 1/18 and 5/24; --start and --duration are passed to it);
+  * gpsd's JSON (gpspipe -w, gpsdecode; a file whose first object line starts with '{', or with a
+    time column and then '{'): re-encoded the same way by asv_ais_csv_to_nmea --gpsd-json, since gpsd
+    keeps no sentence. A report's time is its line's time column (gpspipe -t) or else the last TPV's.
 Each sentence becomes one message stamped with its time (header.stamp, and the bag's record time), the
 line kept whole (tag block included) in `sentence`. A sentence before the first time in the file has no
 time and is dropped; one without its own time after that takes the last time seen (a multi-sentence
@@ -20,8 +23,8 @@ no time, are counted as skipped.
   --topic TOPIC    topic written (default /sim/nmea, what replay.launch plays)
   --frame-id ID    header.frame_id (default ais)
   --source NAME    `source` of each message (default: nmea_to_bag:<INPUT file name>)
-  --start TIME     with a CSV: first report time kept (UTC YYYY-MM-DDTHH:MM:SS)
-  --duration S     with a CSV: seconds kept from the start
+  --start TIME     with a CSV or gpsd JSON: first report time kept (UTC YYYY-MM-DDTHH:MM:SS)
+  --duration S     with a CSV or gpsd JSON: seconds kept from the start
 
 Exit status: 0, 1 when the input cannot be read or holds no timed sentence, 2 on a usage error.
 """
@@ -81,7 +84,17 @@ def split_line(line):
     return None, (line[start:] if start >= 0 else None)
 
 
-def csv_to_nmea(path, start, duration):
+def is_gpsd_json(path):
+    """True when the first line holding a '{' has only a time column (or nothing) before it."""
+    with open(path, errors="replace") as f:
+        for line in f:
+            if line.strip():
+                brace = line.find("{")
+                return brace >= 0 and not any(c in line[:brace] for c in "!$\\")
+    return False
+
+
+def csv_to_nmea(path, start, duration, gpsd_json=False):
     tool = shutil.which("asv_ais_csv_to_nmea")
     if tool is None:
         here = os.path.dirname(os.path.abspath(__file__))
@@ -91,7 +104,7 @@ def csv_to_nmea(path, start, duration):
                 tool = candidate
     if tool is None:
         raise RuntimeError("asv_ais_csv_to_nmea not found (build the workspace and source devel/setup.bash)")
-    cmd = [tool, path] + (["--start", start] if start else []) + (["--duration", str(duration)] if duration else [])
+    cmd = [tool, path] + (["--gpsd-json"] if gpsd_json else []) + (["--start", start] if start else []) + (["--duration", str(duration)] if duration else [])
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     sys.stderr.write(proc.stderr)
     if proc.returncode != 0:
@@ -143,6 +156,8 @@ def main():
     try:
         if a.input.lower().endswith(".csv"):
             lines = csv_to_nmea(a.input, a.start, a.duration)
+        elif is_gpsd_json(a.input):
+            lines = csv_to_nmea(a.input, a.start, a.duration, gpsd_json=True)
         else:
             with open(a.input, errors="replace") as f:
                 lines = f.read().splitlines()

@@ -12,9 +12,18 @@ Expected values by hand:
    -61.8 + 409.6 = 347.8 deg = 3478; its static data as type 24 parts A (name) and B (length 26 m ->
    13 + 13, beam 5 m -> 3 + 3 rounded); the class A row a type 1 and a type 5, stamped 2020-06-30T00:01:00
    = 1593475260 s.
+4. gpsd JSON (gpspipe -w, written here): a type 5 then a type 1 before any time (refused: untimed), a
+   TPV at 00:00:10.5, the type 1 again (stamped 1593475210, the TPV's second), and an unscaled type 18
+   with a gpspipe -t time column 2020-06-30 00:00:20 (1593475220) and speed/course not available.
+   Decoded back: type 1 lat 40.6175 deg = 24370500 and lon -74.0475 = -44428500 (1/10000 min), speed
+   12.3 kn = 123, course 224.0 = 2240, heading 215, name EVER DIADEM, length 225 + 70 = 295 m -> 148 +
+   148; the type 18 keeps speed 1023 and course 3600 (not available).
+5. gpsd itself: gpsdecode reads what the re-encoding wrote, and its JSON fed back gives the same
+   positions, speeds, courses and headings (a round trip through an independent decoder).
 """
 import json
 import os
+import shutil
 import subprocess
 import tempfile
 import unittest
@@ -109,6 +118,61 @@ class NmeaToBag(unittest.TestCase):
         self.assertEqual((objs[2]["to_bow"], objs[2]["to_stern"], objs[2]["to_port"]), (13, 13, 3))
         self.assertEqual(objs[3]["heading"], 511)  # Heading 511: not available, kept so
         self.assertEqual(msgs[-1][1].header.stamp.to_sec(), 1593475260.0)
+
+    GPSD = "\n".join([
+        '{"class":"AIS","device":"stdin","type":5,"repeat":0,"mmsi":351759000,"scaled":true,"imo":9134270,'
+        '"callsign":"3FOF8","shipname":"EVER DIADEM","shiptype":70,"to_bow":225,"to_stern":70,"to_port":1,'
+        '"to_starboard":31,"epfd":1,"draught":12.2,"destination":"NEW YORK","dte":0}',
+        '{"class":"AIS","device":"stdin","type":1,"repeat":0,"mmsi":351759000,"scaled":true,"status":0,'
+        '"turn":0,"speed":12.3,"accuracy":true,"lon":-74.0475,"lat":40.6175,"course":224.0,"heading":215}',
+        '{"class":"TPV","device":"/dev/ttyUSB0","mode":3,"time":"2020-06-30T00:00:10.500Z","lat":40.6,"lon":-74.0}',
+        '{"class":"AIS","device":"stdin","type":1,"repeat":0,"mmsi":351759000,"scaled":true,"status":0,'
+        '"turn":0,"speed":12.3,"accuracy":true,"lon":-74.0475,"lat":40.6175,"course":224.0,"heading":215}',
+        '2020-06-30 00:00:20: {"class":"AIS","device":"stdin","type":18,"repeat":0,"mmsi":338000001,'
+        '"scaled":false,"speed":1023,"accuracy":false,"lon":-44428500,"lat":24370500,"course":3600,'
+        '"heading":511,"second":60}']) + "\n"
+
+    def decode(self, msgs, *flags):
+        sentences = "\n".join(m.sentence for _, m, _ in msgs) + "\n"
+        out = subprocess.run([devel_tool("asv_ais_decode")] + list(flags), input=sentences,
+                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True).stdout
+        return [json.loads(line) for line in out.splitlines()]
+
+    def test_gpsd_json(self):
+        proc, msgs = convert(self.GPSD, "gpspipe.json")
+        self.assertEqual(proc.returncode, 0, proc.stdout)
+        self.assertIn("untimed 1", proc.stdout)
+        self.assertEqual([m.header.stamp.to_sec() for _, m, _ in msgs][0], 1593475210.0)
+        self.assertEqual(msgs[-1][1].header.stamp.to_sec(), 1593475220.0)
+        objs = self.decode(msgs, "-u", "-s")
+        self.assertEqual([o["type"] for o in objs], [1, 5, 18, 24, 24])
+        a = objs[0]
+        self.assertEqual((a["mmsi"], a["lat"], a["lon"], a["speed"], a["course"], a["heading"]),
+                         (351759000, 24370500, -44428500, 123, 2240, 215))
+        self.assertEqual((objs[1]["shipname"], objs[1]["to_bow"], objs[1]["to_stern"]), ("EVER DIADEM", 148, 148))
+        self.assertEqual((objs[2]["mmsi"], objs[2]["speed"], objs[2]["course"], objs[2]["heading"]),
+                         (338000001, 1023, 3600, 511))
+
+    def test_gpsd_json_round_trip_through_gpsdecode(self):
+        gpsdecode = shutil.which("gpsdecode")
+        if gpsdecode is None:
+            self.skipTest("gpsdecode (gpsd-clients) not installed: scripts/setup installs it")
+        proc, msgs = convert(self.GPSD, "gpspipe.json")
+        self.assertEqual(proc.returncode, 0, proc.stdout)
+        sentences = "\n".join(m.sentence.split("\\")[-1] for _, m, _ in msgs) + "\n"  # without tag blocks
+        gpsd = subprocess.run([gpsdecode], input=sentences, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                              text=True).stdout
+        first = [json.loads(line) for line in gpsd.splitlines()]
+        timed = "".join("2020-06-30 00:00:%02d: %s\n" % (k, line) for k, line in enumerate(gpsd.splitlines()))
+        proc2, msgs2 = convert(timed, "gpsdecode.json")
+        self.assertEqual(proc2.returncode, 0, proc2.stdout)
+        again = [json.loads(line) for line in subprocess.run(
+            [gpsdecode], input="\n".join(m.sentence.split("\\")[-1] for _, m, _ in msgs2) + "\n",
+            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True).stdout.splitlines()]
+        keys = ("mmsi", "lat", "lon", "speed", "course", "heading")
+        pos = lambda objs: [tuple(o[k] for k in keys) for o in objs if o["type"] in (1, 18)]
+        self.assertEqual(len(pos(first)), 2)
+        self.assertEqual(pos(again), pos(first))
 
 
 if __name__ == "__main__":

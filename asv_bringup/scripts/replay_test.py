@@ -3,8 +3,9 @@
 
 1. scenario.launch runs the head-on scenario through the whole pipeline with record:=true, leaving a
    bag with every topic (raw NMEA, odometry, the pipeline's /risk).
-2. replay.launch plays the bag's sensor streams (/sim/nmea, /own/odom, /tf) through a fresh ingestion,
-   tracker and risk pipeline under /replay, with the same parameters.
+2. replay.launch plays the bag's sensor streams (/sim/nmea, /own/odom, /tf) and its map origin
+   (/map_origin) through a fresh ingestion, tracker and risk pipeline under /replay, with the same
+   parameters and no origin given: the recorded one places the map.
 3. The replayed /replay/risk must reproduce the recorded /risk: for the recorded assessments the replay
    has one within PAIR_TOL of (the tracker publishes at 2 Hz on its own timer, whose phase the replay
    does not reproduce: the nearest replayed stamp lies up to a quarter second away, plus the 0.1 s
@@ -145,13 +146,16 @@ class RecordReplay(unittest.TestCase):
         replayed = {}
         sub = rospy.Subscriber("/replay/risk", RiskAssessment,
                                lambda m: replayed.__setitem__(key(m.header.stamp), m), queue_size=1000)
+        # No origin given: the map origin is the one the bag recorded (/map_origin). Before the bag
+        # held it, a replay without scenario_file:= put the map 800 km away and lost every AIS target.
         rep = subprocess.run(
-            ["roslaunch", "asv_bringup", "replay.launch", "bag:=" + self.bag_path, "rate:=20",
-             "scenario_file:=" + self.scenario_file], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-            timeout=300)
+            ["roslaunch", "asv_bringup", "replay.launch", "bag:=" + self.bag_path, "rate:=20"],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300)
         sub.unregister()
         self.assertEqual(rep.returncode, 0, rep.stdout.decode(errors="replace")[-3000:])
         pairs, compared = self.compare(replayed)
+        self.assertTrue(any(t.mmsi != 0 for m in replayed.values() for t in m.targets),
+                        "no AIS target in the replay: the map origin was not the recording's")
         # The replay starts when the bag does and ends with it: nearly every recorded stamp is there.
         settled_recorded = [k for k in self.recorded if settled(k)]
         self.assertGreater(len(pairs), 0.8 * len(settled_recorded),

@@ -13,14 +13,18 @@ namespace {
 
 constexpr const char* kYaml = "asv_planning/config/autopilot_bridge.yaml";
 
-// The map origin: the scenario's when origin_scenario is set, else the two keys.
-asv::LocalFrame mapFrame(const asv::AutopilotBridgeConfig& c) {
-  if (c.origin_scenario.empty())
-    return asv::LocalFrame(*c.origin_lat_deg, *c.origin_lon_deg);
-  const asv::Scenario s = asv::loadScenario(c.origin_scenario, asv::ChartOptions{"", "", false});
-  if (!s.has_origin)
-    throw std::invalid_argument("origin_scenario '" + c.origin_scenario + "' has no origin");
-  return asv::LocalFrame(s.origin.lat_deg, s.origin.lon_deg);
+// The node's own map origin: the scenario's when origin_scenario is set, else the two keys; neither:
+// none (the run's /map_origin is used).
+std::optional<asv::GeoPoint> givenOrigin(const asv::AutopilotBridgeConfig& c) {
+  if (!c.origin_scenario.empty()) {
+    const asv::Scenario s = asv::loadScenario(c.origin_scenario, asv::ChartOptions{"", "", false});
+    if (!s.has_origin)
+      throw std::invalid_argument("origin_scenario '" + c.origin_scenario + "' has no origin");
+    return s.origin;
+  }
+  if (c.origin_lat_deg)
+    return asv::GeoPoint{*c.origin_lat_deg, *c.origin_lon_deg};
+  return std::nullopt;
 }
 
 }  // namespace
@@ -36,7 +40,8 @@ AutopilotBridgeNode::AutopilotBridgeNode(ros::NodeHandle nh, ros::NodeHandle pnh
     asv_ros::rejectTypoBehindError(params, kYaml);
     throw;
   }
-  frame_.emplace(mapFrame(config_));
+  map_origin_ = std::make_unique<asv_ros::MapOrigin>(nh_, givenOrigin(config_));
+  frame_.emplace(map_origin_->get().lat_deg, map_origin_->get().lon_deg);
   bridge_ = std::make_unique<asv::AutopilotBridge>(config_);
   output_ = std::make_unique<asv_ros::NmeaOutput>(output_config_);  // throws naming the device
   // An NMEA sentence is at most 82 characters: what a tick sends must fit the line between ticks.

@@ -1,5 +1,5 @@
 // rostest: autopilot_bridge heard by a UDP listener that decodes what it receives. Expected values by
-// hand (map origin 54.6 N 18.8 E, as in config/autopilot_bridge.yaml):
+// hand (map origin 54.6 N 18.8 E, as test/autopilot_bridge.test sets it):
 //  - disarmed at start: nothing is sent, whatever comes in;
 //  - armed, set-point 090 with the ship at (0, 0): the leg runs east from there. The ship then at
 //    (1000, 100), 100 m left of it: cross-track 100 m = 0.054 nm, steer right; destination 1852 m ahead

@@ -106,7 +106,8 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh),
       pnh_(pnh),
       params_(loadArpaParams(pnh)),
-      frame_(params_.origin_lat_deg, params_.origin_lon_deg),
+      map_origin_(nh, givenOrigin(params_)),
+      frame_(map_origin_.get().lat_deg, map_origin_.get().lon_deg),
       framer_([this] {
         asv::nmea::FramerConfig c;
         c.max_length = params_.max_sentence_length;
@@ -129,7 +130,7 @@ ArpaNode::ArpaNode(ros::NodeHandle nh, ros::NodeHandle pnh)
       nh_, params_.input, [this](const std::string& l, const ros::Time& t) { handleLine(l, t); }, &lockstep_);
   lockstep_.start();
   ROS_INFO("arpa_node: input %s, origin %.6f %.6f, own ship from %s, targets on %s", input_->source().c_str(),
-           params_.origin_lat_deg, params_.origin_lon_deg, odom_sub_.getTopic().c_str(),
+           map_origin_.get().lat_deg, map_origin_.get().lon_deg, odom_sub_.getTopic().c_str(),
            targets_pub_.getTopic().c_str());
 }
 

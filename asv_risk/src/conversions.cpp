@@ -1,7 +1,10 @@
 #include "asv_risk/conversions.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include <asv_core/common/geodesy.h>
+#include <asv_core/common/units.h>
 #include <tf2/utils.h>
 
 namespace asv_risk {
@@ -132,3 +135,50 @@ static_assert(TR::ROLE_BOTH_GIVE_WAY == static_cast<uint8_t>(asv::OwnRole::BothG
 static_assert(TR::DECISION_RULE_2 == static_cast<uint8_t>(asv::RuleDecision::Rule2), "decision drift");
 static_assert(TR::DECISION_RULE_APPLIES == static_cast<uint8_t>(asv::RuleDecision::RuleApplies), "");
 }  // namespace
+
+namespace asv_risk {
+
+bool navSatToFix(const sensor_msgs::NavSatFix& msg, asv::gnss::Fix& fix, std::string& why) {
+  if (msg.status.status < sensor_msgs::NavSatStatus::STATUS_FIX) {
+    why = "NavSatFix: no fix (status " + std::to_string(msg.status.status) + ")";
+    return false;
+  }
+  if (!asv::allFinite({msg.latitude, msg.longitude}) || !asv::validLatLon(msg.latitude, msg.longitude)) {
+    why = "NavSatFix: no position";
+    return false;
+  }
+  fix = asv::gnss::Fix{};
+  fix.lat_deg = msg.latitude;
+  fix.lon_deg = msg.longitude;
+  fix.quality = msg.status.status == sensor_msgs::NavSatStatus::STATUS_FIX ? asv::gnss::Quality::kGnss
+                                                                           : asv::gnss::Quality::kDifferential;
+  if (msg.position_covariance_type != sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN) {
+    const double var = std::max(msg.position_covariance[0], msg.position_covariance[4]);  // east, north
+    if (!(std::isfinite(var) && var >= 0.0)) {
+      why = "NavSatFix: covariance is no variance";
+      return false;
+    }
+    fix.sigma = std::sqrt(var);
+  }
+  return true;
+}
+
+bool enuTwistToMotion(const geometry_msgs::TwistStamped& msg, asv::gnss::Motion& motion) {
+  const Eigen::Vector2d v(msg.twist.linear.x, msg.twist.linear.y);
+  if (!v.allFinite())
+    return false;
+  motion.course = asv::courseOf(v);
+  motion.speed = v.norm();
+  return true;
+}
+
+bool enuOrientationToHeading(const geometry_msgs::QuaternionStamped& msg, double& heading) {
+  const auto& q = msg.quaternion;
+  const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  if (!std::isfinite(norm) || std::fabs(norm - 1.0) > 1e-3)
+    return false;
+  heading = asv::yawToCourse(tf2::getYaw(q));
+  return true;
+}
+
+}  // namespace asv_risk

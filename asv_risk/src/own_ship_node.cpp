@@ -5,6 +5,8 @@
 #include <asv_core/common/units.h>
 #include <asv_ros/conversions.h>
 
+#include "asv_risk/conversions.h"
+
 namespace asv_risk {
 
 namespace {
@@ -48,7 +50,8 @@ OwnShipNode::OwnShipNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh),
       pnh_(pnh),
       params_(loadOwnShipParams(pnh)),
-      frame_(params_.origin_lat_deg, params_.origin_lon_deg),
+      map_origin_(nh, givenOrigin(params_)),
+      frame_(map_origin_.get().lat_deg, map_origin_.get().lon_deg),
       estimator_(params_, frame_),
       framer_([this] {
         asv::nmea::FramerConfig c;
@@ -61,10 +64,12 @@ OwnShipNode::OwnShipNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID("own ship " + params_.ship);
   updater_.add("own ship sensors", this, &OwnShipNode::diagnose);
   diag_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
+  if (params_.navsat)
+    subscribeNavSat();
   input_ = std::make_unique<NmeaInput>(
       nh_, params_.input, [this](const std::string& l, const ros::Time& t) { handleLine(l, t); });
   ROS_INFO("own_ship_node: input %s, origin %.6f %.6f, %s -> %s/base_link at %.1f Hz, own MMSI %u",
-           input_->source().c_str(), params_.origin_lat_deg, params_.origin_lon_deg, params_.frame_id.c_str(),
+           input_->source().c_str(), map_origin_.get().lat_deg, map_origin_.get().lon_deg, params_.frame_id.c_str(),
            params_.ship.c_str(), params_.publish_rate, params_.own_mmsi);
 }
 
@@ -96,6 +101,57 @@ void OwnShipNode::handleLine(const std::string& line, const ros::Time& stamp) {
   });
 }
 
+void OwnShipNode::subscribeNavSat() {
+  fix_sub_ = nh_.subscribe("fix", 20, &OwnShipNode::fixCallback, this);
+  vel_sub_ = nh_.subscribe("vel", 20, &OwnShipNode::velCallback, this);
+  heading_sub_ = nh_.subscribe("heading", 20, &OwnShipNode::headingCallback, this);
+  ROS_INFO("own_ship_node: also reading %s, %s and %s", fix_sub_.getTopic().c_str(), vel_sub_.getTopic().c_str(),
+           heading_sub_.getTopic().c_str());
+}
+
+void OwnShipNode::reject(const std::string& why) {
+  last_rejection_ = why;
+  ROS_WARN_THROTTLE(10.0, "own_ship_node: rejected %s; counted in diagnostics", why.c_str());
+}
+
+// The receiver's own stamps are its clock, not ours: what it says is taken when it arrives, as a
+// sentence is.
+void OwnShipNode::fixCallback(const sensor_msgs::NavSatFix& msg) {
+  asv::gnss::Fix fix;
+  std::string why;
+  if (!navSatToFix(msg, fix, why)) {
+    ++navsat_rejected_;
+    reject(why);
+  } else if (estimator_.position(fix, "NavSatFix", ros::Time::now().toSec(), asv_ros::wallNow(), why) !=
+             asv::OwnShipEstimator::Use::kUsed) {
+    reject(why);  // a jump: counted by the estimator
+  } else {
+    ++used_["NavSatFix"];
+  }
+}
+
+void OwnShipNode::velCallback(const geometry_msgs::TwistStamped& msg) {
+  asv::gnss::Motion m;
+  if (!enuTwistToMotion(msg, m)) {
+    ++navsat_rejected_;
+    reject("vel: a velocity that is no number");
+    return;
+  }
+  estimator_.motion(m, ros::Time::now().toSec());
+  ++used_["vel"];
+}
+
+void OwnShipNode::headingCallback(const geometry_msgs::QuaternionStamped& msg) {
+  double h = 0.0;
+  if (!enuOrientationToHeading(msg, h)) {
+    ++navsat_rejected_;
+    reject("heading: a quaternion that is no rotation");
+    return;
+  }
+  estimator_.heading(h, ros::Time::now().toSec(), asv_ros::wallNow());
+  ++used_["heading"];
+}
+
 void OwnShipNode::publish() {
   const ros::Time now = ros::Time::now();
   if (now.isZero())
@@ -125,6 +181,8 @@ void OwnShipNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     stat.add("used " + type, n);
   stat.add("own AIS reports", ais_reports_);
   stat.add("rejected (invalid, no fix, jumps)", estimator_.rejected());
+  if (params_.navsat)
+    stat.add("rejected ROS inputs (fix, vel, heading)", navsat_rejected_);
   stat.add("position jumps", estimator_.jumps());
   stat.add("last rejection", last_rejection_);
   stat.add("odometry published", published_);

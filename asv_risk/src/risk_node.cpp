@@ -32,7 +32,7 @@ RiskNode::RiskNode(ros::NodeHandle nh, ros::NodeHandle pnh)
       pnh_(pnh),
       params_(loadParams(pnh)),
       assessor_(params_.risk),
-      tf_listener_(tf_buffer_),
+      frames_(params_.frame_id),
       diag_min_rate_(params_.min_rate),
       diag_max_rate_(params_.max_rate) {
   risk_pub_ = nh_.advertise<asv_msgs::RiskAssessment>("risk", 10);
@@ -65,23 +65,6 @@ void RiskNode::reject(Reject why, const std::string& what) {
                     what.c_str(), toString(why));
 }
 
-bool RiskNode::transformToWorking(const std::string& frame, const ros::Time& stamp, tf2::Transform& out) {
-  if (frame.empty())
-    return false;
-  const std::string f = frame[0] == '/' ? frame.substr(1) : frame;
-  if (f == params_.frame_id) {
-    out.setIdentity();
-    return true;
-  }
-  try {
-    const geometry_msgs::TransformStamped t = tf_buffer_.lookupTransform(params_.frame_id, f, stamp);
-    tf2::fromMsg(t.transform, out);
-    return true;
-  } catch (const tf2::TransformException&) {
-    return false;
-  }
-}
-
 void RiskNode::checkClock() {
   asv_ros::resetOnClockJump(clock_, updater_, ros::Time::now(), [this] {
     own_.reset();
@@ -95,17 +78,13 @@ void RiskNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
   checkClock();
   asv::ShipState s;
   tf2::Transform t;
-  if (!transformToWorking(msg->header.frame_id, msg->header.stamp, t)) {
+  if (!frames_.get(msg->header.frame_id, msg->header.stamp, t)) {
     ++odom_rejected_;
     reject(Reject::Frame, "own odometry in frame '" + msg->header.frame_id + "'");
     return;
   }
   nav_msgs::Odometry o = *msg;
-  if (msg->header.frame_id != params_.frame_id) {
-    tf2::Transform pose;
-    tf2::fromMsg(o.pose.pose, pose);
-    tf2::toMsg(t * pose, o.pose.pose);
-  }
+  o.pose.pose = asv_ros::transformPose(t, msg->pose.pose);  // the twist stays in the body frame (REP 105)
   const Reject r = odometryToShipState(o, params_.own_ship, s);
   if (r != Reject::None) {
     ++odom_rejected_;
@@ -134,7 +113,7 @@ void RiskNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
   }
   tf2::Transform t;
   uint32_t rejected = 0;
-  if (!transformToWorking(msg->header.frame_id, msg->header.stamp, t)) {
+  if (!frames_.get(msg->header.frame_id, msg->header.stamp, t)) {
     for (const auto& tg : msg->targets)
       reject(Reject::Frame, "target '" + tg.id + "' in frame '" + msg->header.frame_id + "'");
     rejected = msg->targets.size();

@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+
+#include <asv_core/common/units.h>
 
 #include "asv_risk/conversions.h"
 
@@ -100,4 +103,54 @@ TEST(Conversions, HeartbeatOnlyWhenNothingWentOutForAPeriod) {
   // The clock went back (a looping bag): at once; no clock yet: never.
   EXPECT_TRUE(asv_risk::heartbeatArray(ros::Time(50.0), last, 0.5, "map"));
   EXPECT_FALSE(asv_risk::heartbeatArray(ros::Time(0.0), last, 0.5, "map"));
+}
+
+// A GNSS driver's messages (own_ship_node's navsat input), by hand.
+TEST(Conversions, NavSatFixStatusAndCovarianceBecomeQualityAndSigma) {
+  sensor_msgs::NavSatFix m;
+  m.latitude = 48.1173;
+  m.longitude = 11.5;
+  m.status.status = sensor_msgs::NavSatStatus::STATUS_SBAS_FIX;
+  m.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_DIAGONAL_KNOWN;
+  m.position_covariance[0] = 4.0;  // east variance
+  m.position_covariance[4] = 9.0;  // north: the larger, 1-sigma 3 m
+  asv::gnss::Fix f;
+  std::string why;
+  ASSERT_TRUE(asv_risk::navSatToFix(m, f, why));
+  EXPECT_EQ(f.quality, asv::gnss::Quality::kDifferential);
+  ASSERT_TRUE(f.sigma);
+  EXPECT_DOUBLE_EQ(*f.sigma, 3.0);
+  m.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
+  m.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
+  ASSERT_TRUE(asv_risk::navSatToFix(m, f, why));
+  EXPECT_EQ(f.quality, asv::gnss::Quality::kGnss);
+  EXPECT_FALSE(f.sigma);  // the fix type's error then applies
+  m.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
+  EXPECT_FALSE(asv_risk::navSatToFix(m, f, why));
+  EXPECT_EQ(why, "NavSatFix: no fix (status -1)");
+  m.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
+  m.latitude = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(asv_risk::navSatToFix(m, f, why));
+  EXPECT_EQ(why, "NavSatFix: no position");
+}
+
+TEST(Conversions, EnuVelocityAndOrientationBecomeCourseSpeedAndHeading) {
+  geometry_msgs::TwistStamped v;
+  v.twist.linear.x = -3.0;  // west
+  v.twist.linear.y = -4.0;  // south: course 216.87 (180 + atan(3/4)), speed 5
+  asv::gnss::Motion m;
+  ASSERT_TRUE(asv_risk::enuTwistToMotion(v, m));
+  EXPECT_NEAR(asv::radToDeg(*m.course), 216.8699, 1e-4);
+  EXPECT_DOUBLE_EQ(*m.speed, 5.0);
+  v.twist.linear.x = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(asv_risk::enuTwistToMotion(v, m));
+  geometry_msgs::QuaternionStamped q;  // ENU yaw 30 deg (about z): heading 060
+  q.quaternion.z = std::sin(asv::degToRad(15.0));
+  q.quaternion.w = std::cos(asv::degToRad(15.0));
+  double h = 0.0;
+  ASSERT_TRUE(asv_risk::enuOrientationToHeading(q, h));
+  EXPECT_NEAR(asv::radToDeg(h), 60.0, 1e-9);
+  q.quaternion.w = 0.0;
+  q.quaternion.z = 0.0;  // the zero quaternion is no rotation
+  EXPECT_FALSE(asv_risk::enuOrientationToHeading(q, h));
 }

@@ -17,7 +17,10 @@
 
 #include <asv_msgs/Alarm.h>
 #include <asv_msgs/NmeaSentence.h>
+#include <geometry_msgs/QuaternionStamped.h>
+#include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <sensor_msgs/NavSatFix.h>
 #include <ros/ros.h>
 
 namespace {
@@ -88,6 +91,58 @@ TEST(OwnShipNode, GnssLogToOdometryJumpsRejectedStaleFixAlarmed) {
   EXPECT_EQ(alarm->inputs[0], "fix");
   EXPECT_LT((ros::Time::now() - last_odom).toSec(), 4.0);
   EXPECT_GT((ros::Time::now() - last_odom).toSec(), 1.0) << "odometry goes on without a fix";
+}
+
+// A GNSS driver's topics (navsat: true, node own_ship_navsat in own_ship_node.test): a fix 0.001 deg north
+// of the origin (the meridian arc at 48.1 N: 111.193 m, test_own_ship.cpp) with covariance diag (4, 9),
+// velocity due north at 5 m/s, orientation ENU yaw 80 deg (heading 010). Expected by hand: x 0, y 111.193
+// plus at most 0.3 s x 5 m/s dead-reckoned, position variance 9 (the larger), body twist
+// (5 cos 10, 5 sin 10) = (4.924, 0.868): the ship sails 10 deg to port of her heading.
+TEST(OwnShipNode, NavSatFixVelocityAndHeadingTopicsToOdometry) {
+  ros::NodeHandle nh;
+  ros::Publisher fix = nh.advertise<sensor_msgs::NavSatFix>("navsat/fix", 10);
+  ros::Publisher vel = nh.advertise<geometry_msgs::TwistStamped>("navsat/vel", 10);
+  ros::Publisher heading = nh.advertise<geometry_msgs::QuaternionStamped>("navsat/heading", 10);
+  nav_msgs::Odometry::ConstPtr odom;
+  ros::Subscriber os = nh.subscribe<nav_msgs::Odometry>(
+      "navsat/odom", 50, [&](const nav_msgs::Odometry::ConstPtr& m) { odom = m; });
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(20.0);
+  while ((fix.getNumSubscribers() == 0 || heading.getNumSubscribers() == 0 || os.getNumPublishers() == 0) &&
+         ros::WallTime::now() < deadline)
+    ros::WallDuration(0.05).sleep();
+  sensor_msgs::NavSatFix f;
+  f.latitude = 48.1173 + 0.001;
+  f.longitude = 11.516666666666667;
+  f.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
+  f.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_DIAGONAL_KNOWN;
+  f.position_covariance[0] = 4.0;
+  f.position_covariance[4] = 9.0;
+  geometry_msgs::TwistStamped v;
+  v.twist.linear.y = 5.0;
+  geometry_msgs::QuaternionStamped q;
+  q.quaternion.z = std::sin(80.0 * M_PI / 360.0);
+  q.quaternion.w = std::cos(80.0 * M_PI / 360.0);
+  for (int k = 0; k < 15; ++k) {
+    f.header.stamp = v.header.stamp = q.header.stamp = ros::Time::now();
+    vel.publish(v);
+    heading.publish(q);
+    fix.publish(f);
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(0.2);
+    while (ros::WallTime::now() < until) {
+      ros::spinOnce();
+      ros::WallDuration(0.01).sleep();
+    }
+  }
+  ASSERT_TRUE(odom) << "no odometry from the NavSatFix topics";
+  EXPECT_NEAR(odom->pose.pose.position.x, 0.0, 0.5);
+  EXPECT_GT(odom->pose.pose.position.y, 111.193 - 0.5);
+  EXPECT_LT(odom->pose.pose.position.y, 111.193 + 5.0 * 0.3 + 0.5);
+  EXPECT_DOUBLE_EQ(odom->pose.covariance[0], 9.0);
+  EXPECT_NEAR(odom->twist.twist.linear.x, 4.924, 1e-3);
+  EXPECT_NEAR(odom->twist.twist.linear.y, 0.868, 1e-3);
+  EXPECT_NEAR(2.0 * std::atan2(odom->pose.pose.orientation.z, odom->pose.pose.orientation.w), 80.0 * M_PI / 180.0,
+              1e-6);
+  EXPECT_EQ(odom->child_frame_id, "navsat_own/base_link");
 }
 
 }  // namespace

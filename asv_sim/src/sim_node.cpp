@@ -52,6 +52,8 @@ SimNodeParams loadParams(const ros::NodeHandle& pnh) {
 
 SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), params_(loadParams(pnh)) {
   sim_ = std::make_unique<asv::Simulation>(asv::loadScenario(params_.scenario, params_.charts), params_.sim);
+  // The scenario's origin is the simulator's own: a run's /map_origin that differs stops it.
+  map_origin_ = std::make_unique<asv_ros::MapOrigin>(nh_, sim_->frame().origin());
   emitter_ = std::make_unique<asv::NmeaEmitter>(params_.emitter, params_.seed);
   if (params_.publish_clock)
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);

@@ -179,8 +179,9 @@ TEST(AutopilotBridge, LostOdometryInvalidatesTheRouteButHoldsTheHeading) {
 
 TEST(AutopilotBridge, ConfigNamesABadKey) {
   asv::ParamMap p;
-  EXPECT_THROW(asv::AutopilotBridgeConfig::fromParams(p), std::invalid_argument);  // no origin
+  EXPECT_FALSE(asv::AutopilotBridgeConfig::fromParams(p).origin_lat_deg);  // none: the run's /map_origin
   p.set("origin_lat_deg", 54.6);
+  EXPECT_THROW(asv::AutopilotBridgeConfig::fromParams(p), std::invalid_argument);  // half an origin
   p.set("origin_lon_deg", 18.8);
   p.setList("sentences", {"APB", "GGA"});
   try {

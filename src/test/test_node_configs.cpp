@@ -13,6 +13,7 @@
 #include "asv_core/sim/sim_node_config.h"
 #include "asv_core/tracking/ingestion_config.h"
 #include "asv_core/tracking/own_ship.h"
+#include "asv_core/tracking/plotter_output.h"
 #include "asv_core/tracking/tracker_node_config.h"
 
 using asv::ParamMap;
@@ -104,8 +105,11 @@ TEST(NodeConfigs, IngestionYamlsAreTheCodesKeySets) {
   EXPECT_DOUBLE_EQ(r.targets.forget_after, 120.0);
 }
 
-TEST(NodeConfigs, IngestionNeedsAnOrigin) {
-  EXPECT_THROW(asv::AisNodeConfig::fromParams(ParamMap()), std::invalid_argument);
+// No origin of its own is valid (the node then takes /map_origin); half of one, or one off the globe, is not.
+TEST(NodeConfigs, IngestionOriginIsWholeOrAbsent) {
+  const auto none = asv::AisNodeConfig::fromParams(ParamMap());
+  EXPECT_FALSE(none.has_origin);
+  EXPECT_TRUE(none.origin_scenario.empty());
   EXPECT_THROW(asv::AisNodeConfig::fromParams(ParamMap(std::map<std::string, std::string>{{"origin_lat_deg", "54.6"}})), std::invalid_argument);
   EXPECT_NO_THROW(asv::ArpaNodeConfig::fromParams(ParamMap(std::map<std::string, std::string>{{"origin_scenario", "head_on.yaml"}})));
   EXPECT_THROW(asv::ArpaNodeConfig::fromParams(ParamMap({{"origin_lat_deg", "91"}, {"origin_lon_deg", "0"}})),
@@ -155,4 +159,17 @@ TEST(NodeConfigs, OwnShipAndAutopilotBridgeYamlAreTheCodesKeySets) {
   EXPECT_FALSE(b.armed_at_start);
   EXPECT_EQ(b.safe_action, "hold_course");
   EXPECT_DOUBLE_EQ(b.watch.input_timeout, asv::AutopilotBridgeConfig().watch.input_timeout);
+  EXPECT_FALSE(o.has_origin);  // the origin lines are commented out: the run's /map_origin
+  EXPECT_FALSE(o.navsat);
+}
+
+TEST(NodeConfigs, PlotterYamlIsTheCodesKeySet) {
+  ParamMap plotter = loadYaml("asv_risk/config/plotter_node.yaml");
+  const asv::PlotterConfig p = asv::PlotterConfig::fromParams(plotter);
+  EXPECT_EQ(unknown(plotter, {"output/"}), "");  // output/ is the node's I/O glue (asv_ros::NmeaOutputConfig)
+  const asv::PlotterConfig d;
+  EXPECT_DOUBLE_EQ(p.rate, d.rate);
+  EXPECT_EQ(p.sentences, d.sentences);
+  EXPECT_EQ(p.max_targets, d.max_targets);
+  EXPECT_DOUBLE_EQ(p.stale_after, d.stale_after);
 }

@@ -123,6 +123,44 @@ TEST(OwnShip, FixCourseHeadingDeadReckonedWithTheirSigmas) {
             asv::OwnShipEstimator::Use::kNotNavigation);
 }
 
+// A receiver read as ROS messages (own_ship_node's navsat): position with its own 1-sigma, velocity and
+// heading through the same rules. 0.001 deg north of the origin (48.1173 N) is the meridian arc
+// M x 0.001 deg, M = a (1 - e^2) / (1 - e^2 sin^2 48.1178)^1.5 = 6370867.5 m: 111.193 m.
+TEST(OwnShip, ReceiverFixVelocityAndHeadingFromOtherSources) {
+  const asv::OwnShipConfig c = config();
+  asv::OwnShipEstimator e(c, asv::LocalFrame(c.origin_lat_deg, c.origin_lon_deg));
+  g::Fix f;
+  f.lat_deg = 48.1173 + 0.001;
+  f.lon_deg = c.origin_lon_deg;
+  f.quality = g::Quality::kGnss;
+  f.sigma = 3.0;
+  std::string why;
+  ASSERT_EQ(e.position(f, "NavSatFix", 0.0, 0.0, why), asv::OwnShipEstimator::Use::kUsed);
+  EXPECT_FALSE(e.state(0.0)) << "no velocity yet: no odometry";
+  e.motion(g::Motion{0.0, 5.0}, 0.0);  // due north at 5 m/s
+  e.heading(asv::degToRad(10.0), 0.0, 0.0);
+  auto s = e.state(1.0);
+  ASSERT_TRUE(s);
+  EXPECT_NEAR(s->position.x(), 0.0, 0.01);
+  EXPECT_NEAR(s->position.y(), 111.193 + 5.0, 0.01);  // dead-reckoned 1 s
+  EXPECT_DOUBLE_EQ(s->position_sigma, 3.0);            // the receiver's, not HDOP x 4 m
+  EXPECT_EQ(s->position_source, "NavSatFix");
+  EXPECT_NEAR(asv::radToDeg(s->heading), 10.0, 1e-9);
+  EXPECT_FALSE(s->heading_from_cog);
+  // No fix, or no position: rejected and counted, never a value.
+  f.quality = g::Quality::kNone;
+  EXPECT_EQ(e.position(f, "NavSatFix", 1.0, 1.0, why), asv::OwnShipEstimator::Use::kRejected);
+  EXPECT_EQ(why, "NavSatFix: no fix");
+  f.quality = g::Quality::kGnss;
+  f.lat_deg = std::nan("");
+  EXPECT_EQ(e.position(f, "NavSatFix", 1.0, 1.0, why), asv::OwnShipEstimator::Use::kRejected);
+  EXPECT_EQ(e.rejected(), 2u);
+  // 0.1 deg (11 km) away 1 s later is a jump, as for a sentence.
+  f.lat_deg = 48.2173;
+  EXPECT_EQ(e.position(f, "NavSatFix", 1.0, 1.0, why), asv::OwnShipEstimator::Use::kRejected);
+  EXPECT_EQ(e.jumps(), 1u);
+}
+
 TEST(OwnShip, WithoutAHeadingSensorTheCourseStandsInWhileMaking) {
   const asv::OwnShipConfig c = config();
   asv::OwnShipEstimator e(c, asv::LocalFrame(c.origin_lat_deg, c.origin_lon_deg));

@@ -1,6 +1,6 @@
-// asv_ais_csv_to_nmea: a decoded AIS log (MarineCadastre CSV) back into AIVDM sentences with NMEA 4
-// tag-block times, so that a log of decoded reports replays through ais_node like a receiver's output
-// (nmea_to_bag.py turns the sentences into a bag).
+// asv_ais_csv_to_nmea: a decoded AIS log (MarineCadastre CSV, or gpsd's JSON) back into AIVDM sentences
+// with NMEA 4 tag-block times, so that a log of decoded reports replays through ais_node like a
+// receiver's output (nmea_to_bag.py turns the sentences into a bag).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,7 +11,10 @@
 #include <string>
 #include <vector>
 
+#include <yaml-cpp/yaml.h>
+
 #include "asv_core/codec/nmea_encode.h"
+#include "asv_core/common/geodesy.h"
 #include "asv_core/common/units.h"
 #include "asv_core/sim/scenario_from_ais.h"
 #include "tool_main.h"
@@ -22,18 +25,26 @@ using namespace asv;
 
 const char* const kUsage =
     "usage: asv_ais_csv_to_nmea CSV [--start TIME] [--duration S] [--static-every S] [--out FILE]\n"
+    "       asv_ais_csv_to_nmea --gpsd-json LOG [same options]\n"
     "\n"
     "Turns a decoded AIS log (MarineCadastre CSV columns: BaseDateTime, LON, LAT, MMSI, SOG, COG,\n"
     "Heading, VesselName, Length, Width, TranscieverClass) back into AIVDM sentences, in time order:\n"
     "each report becomes a type 1 (class A) or type 18 (class B) position report, and each vessel's\n"
     "static data (name, length and beam: type 5 for class A, type 24 parts A and B for class B) is sent\n"
     "at her first report and again every --static-every seconds. Every sentence carries an NMEA 4 tag\n"
-    "block with the report's time (c:, UNIX seconds) and the source (s:csv), the form ais_node's file\n"
+    "block with the report's time (c:, UNIX seconds) and the source (s:csv, s:gpsd), the form ais_node's file\n"
     "input and nmea_to_bag.py read. The log's defects are repaired as asv_scenario_from_ais does: COG < 0\n"
     "is a 12-bit wrap (+409.6), COG 360, SOG 102.3 and Heading 511 are 'not available'; unreadable rows\n"
     "are refused and counted on stderr. The reference point is taken as the middle of the hull.\n"
     "\n"
-    "  CSV               the log\n"
+    "With --gpsd-json the log is gpsd's JSON (gpspipe -w, gpsdecode; scaled or -u unscaled), one object\n"
+    "a line: AIS types 1-3, 18 and 19 are the position reports, types 5, 19 and 24 give each vessel's name\n"
+    "and size. gpsd's AIS objects carry no time: a report takes its line's leading time column (gpspipe\n"
+    "-t: 'YYYY-MM-DD HH:MM:SS: {...}', or UNIX seconds) or else the time of the last TPV object; a report\n"
+    "before any time is refused as untimed. Other classes and types are skipped, counted.\n"
+    "\n"
+    "  CSV, LOG          the log\n"
+    "  --gpsd-json       the log is gpsd JSON\n"
     "  --start TIME      first report time kept, UTC YYYY-MM-DDTHH:MM:SS (default: the log's first)\n"
     "  --duration S      seconds kept from the start (default: all)\n"
     "  --static-every S  static data period per vessel [s] (default 360, the class A rate)\n"
@@ -45,12 +56,17 @@ const char* const kUsage =
 struct Args {
   std::string csv, out, start;
   double duration = -1.0, static_every = 360.0;
+  bool gpsd_json = false;
 };
 
 bool parse(int argc, char** argv, Args& a) {
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
     exitOnHelp(k, kUsage);
+    if (k == "--gpsd-json") {
+      a.gpsd_json = true;
+      continue;
+    }
     if (k.rfind("--", 0) != 0) {
       if (!a.csv.empty())
         return false;
@@ -75,10 +91,10 @@ bool parse(int argc, char** argv, Args& a) {
   return !a.csv.empty();
 }
 
-// "\s:csv,c:<seconds>*hh\" + sentence.
-std::string tagged(const std::string& sentence, double time) {
+// "\s:<source>,c:<seconds>*hh\" + sentence.
+std::string tagged(const std::string& sentence, double time, const char* source) {
   char body[64];
-  std::snprintf(body, sizeof(body), "s:csv,c:%lld", static_cast<long long>(std::floor(time)));
+  std::snprintf(body, sizeof(body), "s:%s,c:%lld", source, static_cast<long long>(std::floor(time)));
   unsigned sum = 0;
   for (const char* p = body; *p; ++p)
     sum ^= static_cast<unsigned char>(*p);
@@ -96,7 +112,7 @@ Report kinematics(const AisLogReport& r) {
   Report out;
   out.lat = ais::rawLat(r.position.lat_deg);
   out.lon = ais::rawLon(r.position.lon_deg);
-  out.speed = ais::rawSpeed(knotsToMps(r.sog_kn));  // the reader refuses rows without SOG
+  out.speed = ais::rawSpeed(knotsToMps(r.sog_kn));  // the CSV reader refuses rows without SOG; JSON: NaN
   out.course = ais::rawCourse(rad(r.cog_deg));
   out.heading = ais::rawHeading(rad(r.heading_deg));
   return out;
@@ -130,12 +146,129 @@ std::vector<ais::BitWriter> staticReports(const AisLogReport& r) {
   return {ais::encodeStaticVoyage(r.mmsi, d)};
 }
 
+// --- gpsd JSON ---------------------------------------------------------------------------------------
+
+// A time column's or TPV's time: UNIX seconds, or UTC "YYYY-MM-DD[T ]HH:MM:SS[.fff][Z]".
+std::optional<double> timeOf(const std::string& text) {
+  double x = 0.0;
+  if (toolNumber(text, x))
+    return x;
+  if (text.size() < 19)
+    return std::nullopt;
+  try {
+    double t = parseUtcTime(text.substr(0, 19));
+    const std::string rest = text.substr(19);
+    if (!rest.empty() && rest[0] == '.' && toolNumber("0" + rest.substr(0, rest.find_first_not_of("0123456789", 1)), x))
+      t += x;
+    return t;
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+// What gpsd knows of a vessel from its static reports (types 5, 19, 24).
+struct GpsdStatic {
+  std::string name;
+  double length_m = 0.0, beam_m = 0.0;
+};
+
+void takeStatic(const YAML::Node& o, GpsdStatic& s) {
+  if (o["shipname"])
+    s.name = o["shipname"].as<std::string>();
+  if (o["to_bow"] && o["to_stern"])
+    s.length_m = o["to_bow"].as<double>() + o["to_stern"].as<double>();
+  if (o["to_port"] && o["to_starboard"])
+    s.beam_m = o["to_port"].as<double>() + o["to_starboard"].as<double>();
+}
+
+// A position report's fields, scaled (degrees, knots) or not (1/600000 deg, 1/10 kn, 1/10 deg), with
+// gpsd's "not available" values left out. False for no position.
+bool takePosition(const YAML::Node& o, AisLogReport& r) {
+  const bool scaled = !o["scaled"] || o["scaled"].as<bool>();
+  const double deg = scaled ? 1.0 : 1.0 / 600000.0, tenth = scaled ? 1.0 : 0.1;
+  r.position = {o["lat"].as<double>() * deg, o["lon"].as<double>() * deg};
+  if (!validLatLon(r.position.lat_deg, r.position.lon_deg))
+    return false;
+  const double sog = o["speed"] ? o["speed"].as<double>() * tenth : 102.3;
+  // Not available stays so (NaN encodes as 102.3): the report is a receiver's, not a row to repair.
+  r.sog_kn = sog >= 102.25 ? std::nan("") : sog;
+  const double cog = o["course"] ? o["course"].as<double>() * tenth : 360.0;
+  r.cog_deg = cog < 360.0 ? std::optional<double>(cog) : std::nullopt;
+  const double hdg = o["heading"] ? o["heading"].as<double>() : 511.0;
+  r.heading_deg = hdg < 360.0 ? std::optional<double>(hdg) : std::nullopt;
+  return true;
+}
+
+// One JSON object of the log at `time` (empty: untimed): a report appended to `log`, or a static
+// report or TPV taken; anything else counted in `stats`.
+void takeObject(const YAML::Node& o, std::optional<double>& time, std::map<std::uint32_t, GpsdStatic>& statics,
+                std::vector<AisLogReport>& log, AisLogStats& stats) {
+  const std::string cls = o["class"] ? o["class"].as<std::string>() : "";
+  if (cls == "TPV") {
+    if (o["time"])
+      if (const auto t = timeOf(o["time"].as<std::string>()))
+        time = t;
+    return;
+  }
+  const int type = cls == "AIS" && o["type"] ? o["type"].as<int>() : 0;
+  if (type == 0 || !o["mmsi"]) {
+    ++stats.rejected["not an AIS object"];
+    return;
+  }
+  const auto mmsi = o["mmsi"].as<std::uint32_t>();
+  GpsdStatic& st = statics[mmsi];
+  if (type == 5 || type == 19 || type == 24)
+    takeStatic(o, st);
+  const bool position = type <= 3 || type == 18 || type == 19;
+  if (!position) {
+    ++stats.rejected[type == 5 || type == 24 ? "static data (merged)" : "other type"];
+    return;
+  }
+  AisLogReport r;
+  r.mmsi = mmsi;
+  r.ais_class = type >= 18 ? 'B' : 'A';
+  if (!time)
+    ++stats.rejected["untimed"];
+  else if (!o["lat"] || !o["lon"] || !takePosition(o, r))
+    ++stats.rejected["no position"];
+  else {
+    r.time = *time;
+    r.name = st.name;
+    r.length_m = st.length_m;
+    r.beam_m = st.beam_m;
+    log.push_back(r);
+    ++stats.kept;
+  }
+}
+
+std::vector<AisLogReport> readGpsdJson(std::istream& in, AisLogStats& stats) {
+  std::vector<AisLogReport> log;
+  std::map<std::uint32_t, GpsdStatic> statics;
+  std::optional<double> tpv_time;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t brace = line.find('{');
+    if (brace == std::string::npos)
+      continue;
+    ++stats.rows;
+    std::string column = line.substr(0, brace);
+    column.erase(column.find_last_not_of(" :,\t") + 1);  // "2020-06-30 00:00:00: " -> the time
+    std::optional<double> time = column.empty() ? tpv_time : timeOf(column);
+    try {
+      const YAML::Node o = YAML::Load(line.substr(brace));  // JSON is YAML's flow style
+      takeObject(o, column.empty() ? tpv_time : time, statics, log, stats);
+    } catch (const YAML::Exception&) {
+      ++stats.rejected["not JSON"];
+    }
+  }
+  return log;
+}
+
 int run(const Args& a) {
   std::ifstream in(a.csv);
   if (!in)
     throw std::runtime_error("cannot read " + a.csv);
   AisLogStats stats;
-  std::vector<AisLogReport> log = readMarineCadastreCsv(in, stats);
+  std::vector<AisLogReport> log = a.gpsd_json ? readGpsdJson(in, stats) : readMarineCadastreCsv(in, stats);
   std::stable_sort(log.begin(), log.end(), [](const auto& x, const auto& y) { return x.time < y.time; });
   const double start = a.start.empty() ? (log.empty() ? 0.0 : log.front().time) : parseUtcTime(a.start);
   const double end = a.duration > 0 ? start + a.duration : INFINITY;
@@ -160,7 +293,7 @@ int run(const Args& a) {
     }
     for (const auto& m : messages) {
       for (const auto& s : ais::toSentences(m, r.ais_class == 'B' ? 'B' : 'A', static_cast<int>(seq++ % 10)))
-        out << tagged(s, r.time) << '\n';
+        out << tagged(s, r.time, a.gpsd_json ? "gpsd" : "csv") << '\n';
       ++written;
     }
   }

@@ -15,6 +15,7 @@
 #include <asv_core/planning/autopilot_bridge.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_ros/alarm.h>
+#include <asv_ros/map_origin.h>
 #include <asv_ros/nmea_output.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nav_msgs/Odometry.h>
@@ -37,6 +38,7 @@ private:
   ros::NodeHandle nh_, pnh_;
   asv::AutopilotBridgeConfig config_;
   asv_ros::NmeaOutputConfig output_config_;
+  std::unique_ptr<asv_ros::MapOrigin> map_origin_;
   std::optional<asv::LocalFrame> frame_;
   bool publish_twist_ = false;
   std::unique_ptr<asv::AutopilotBridge> bridge_;

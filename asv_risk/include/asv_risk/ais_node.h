@@ -60,6 +60,7 @@ private:
 
   ros::NodeHandle nh_, pnh_;
   AisNodeParams params_;
+  asv_ros::MapOrigin map_origin_;
   asv::LocalFrame frame_;
   LineFramer framer_;
   asv::ais::Decoder decoder_;

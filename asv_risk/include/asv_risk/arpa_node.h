@@ -75,6 +75,7 @@ private:
 
   ros::NodeHandle nh_, pnh_;
   ArpaNodeParams params_;
+  asv_ros::MapOrigin map_origin_;
   asv::LocalFrame frame_;
   LineFramer framer_;
   asv::ArpaTargetTable table_;

@@ -5,11 +5,15 @@
 #include <optional>
 #include <string>
 
+#include <asv_core/codec/gnss.h>
 #include <asv_core/risk/risk_assessment.h>
 #include <asv_msgs/Target.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_msgs/TargetRisk.h>
+#include <geometry_msgs/QuaternionStamped.h>
+#include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <sensor_msgs/NavSatFix.h>
 
 namespace asv_risk {
 
@@ -31,6 +35,18 @@ Reject odometryToShipState(const nav_msgs::Odometry& msg, const std::string& nam
 // `period` (or the clock went back); `last` then becomes now. None while the clock is not running.
 std::optional<asv_msgs::TargetArray> heartbeatArray(const ros::Time& now, ros::Time& last, double period,
                                                     const std::string& frame_id);
+
+// A receiver's NavSatFix as a fix: its status as the fix quality (FIX: GNSS, SBAS_FIX and GBAS_FIX:
+// differential), the horizontal 1-sigma from the covariance (the larger of its east and north
+// variances) unless its type is unknown. False, with `why`, for NO_FIX or a position that is no number.
+bool navSatToFix(const sensor_msgs::NavSatFix& msg, asv::gnss::Fix& fix, std::string& why);
+
+// A velocity over ground in ENU (x east, y north, m/s, as a GNSS driver's `vel`) as course and speed.
+// False for a value that is no number.
+bool enuTwistToMotion(const geometry_msgs::TwistStamped& msg, asv::gnss::Motion& motion);
+
+// An orientation in ENU (REP 103) as a true heading [rad]. False for a quaternion that is no rotation.
+bool enuOrientationToHeading(const geometry_msgs::QuaternionStamped& msg, double& heading);
 
 // Fills a TargetRisk message from the core result.
 asv_msgs::TargetRisk toMsg(const asv::TargetRisk& r, uint32_t mmsi);

@@ -2,9 +2,11 @@
 // ingestion_config.h) and, as ROS glue, the input they read from (input/ subtree).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <asv_core/tracking/ingestion_config.h>
+#include <asv_ros/map_origin.h>
 #include <asv_ros/params.h>
 #include <ros/ros.h>
 
@@ -15,6 +17,14 @@ namespace asv_risk {
 // When origin_scenario is set, takes the origin from that scenario file (format 1); throws
 // std::invalid_argument when the file has none (and naming the file, line and key when it is bad).
 void resolveOrigin(asv::IngestionConfig& c);
+
+// The node's map origin (asv_ros/map_origin.h): its own (`c`'s origin, resolved) when it has one, else
+// the run's /map_origin.
+inline std::optional<asv::GeoPoint> givenOrigin(const asv::IngestionConfig& c) {
+  if (!c.has_origin)
+    return std::nullopt;
+  return asv::GeoPoint{c.origin_lat_deg, c.origin_lon_deg};
+}
 
 template <typename CoreConfig>
 struct IngestionNodeParams : CoreConfig {

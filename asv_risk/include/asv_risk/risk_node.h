@@ -23,8 +23,7 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <tf2/LinearMath/Transform.h>
-#include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
+#include <asv_ros/frames.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "asv_risk/conversions.h"
@@ -48,7 +47,6 @@ private:
   void reject(Reject why, const std::string& what);
   // Forgets the own ship and every compliance history when the clock has gone backwards (a looping bag).
   void checkClock();
-  bool transformToWorking(const std::string& frame, const ros::Time& stamp, tf2::Transform& out);
   visualization_msgs::MarkerArray makeMarkers(const asv_msgs::RiskAssessment& ra) const;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
   // The inputs' watch (every kWatchPeriod): the alarm, and while an input is stale the last assessment again
@@ -61,8 +59,7 @@ private:
   asv::RiskAssessor assessor_;
   ros::Subscriber odom_sub_, targets_sub_;
   ros::Publisher risk_pub_, marker_pub_;
-  tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
+  asv_ros::FrameLookup frames_;
   diagnostic_updater::Updater updater_;
   double diag_min_rate_, diag_max_rate_;
   std::unique_ptr<diagnostic_updater::TopicDiagnostic> risk_diag_;

@@ -20,6 +20,7 @@
 #include <asv_core/sim/sim_node_config.h>
 #include <asv_core/sim/simulation.h>
 #include <asv_ros/alarm.h>
+#include <asv_ros/map_origin.h>
 #include <asv_ros/nmea_output.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/LockstepAck.h>
@@ -83,6 +84,7 @@ private:
   ros::NodeHandle nh_, pnh_;
   SimNodeParams params_;
   std::unique_ptr<asv::Simulation> sim_;
+  std::unique_ptr<asv_ros::MapOrigin> map_origin_;
   std::unique_ptr<asv::NmeaEmitter> emitter_;
   ros::Publisher clock_pub_, nmea_pub_, ships_pub_, events_pub_, markers_pub_, land_pub_;
   std::vector<ros::Publisher> odom_pubs_;

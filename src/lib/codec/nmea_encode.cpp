@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 
 #include "asv_core/common/units.h"
 
@@ -193,7 +194,7 @@ BitWriter encodeStaticDataReport(std::uint32_t mmsi, const StaticDataReport& d) 
 }
 
 std::vector<std::string> toSentences(const BitWriter& payload, char channel, int seq_id,
-                                     const std::string& talker, std::size_t max_chars) {
+                                     const std::string& talker, std::size_t max_chars, const std::string& formatter) {
   int fill = 0;
   const std::string all = payload.armour(fill);
   const std::size_t n = std::max<std::size_t>(1, (all.size() + max_chars - 1) / max_chars);
@@ -201,7 +202,7 @@ std::vector<std::string> toSentences(const BitWriter& payload, char channel, int
   for (std::size_t i = 0; i < n; ++i) {
     const std::string part = all.substr(i * max_chars, max_chars);
     const int f = i + 1 == n ? fill : 0;
-    std::string body = talker + "VDM," + std::to_string(n) + "," + std::to_string(i + 1) + "," +
+    std::string body = talker + formatter + "," + std::to_string(n) + "," + std::to_string(i + 1) + "," +
                        (n > 1 ? std::to_string(seq_id % 10) : std::string()) + "," + std::string(1, channel) +
                        "," + part + "," + std::to_string(f);
     out.push_back(nmea::withChecksum('!', body));
@@ -210,6 +211,52 @@ std::vector<std::string> toSentences(const BitWriter& payload, char channel, int
 }
 
 }  // namespace ais
+
+namespace gnss {
+
+namespace {
+
+// "ddmm.mmmm,N" or "dddmm.mmmm,E": degrees and decimal minutes, rounded to 1/10000 minute first so that
+// 59.99995' becomes the next degree rather than "60.0000".
+std::string angle(double deg, int deg_digits, char pos, char neg) {
+  const long long units = std::llround(std::fabs(deg) * 600000.0);  // 1/10000 minute
+  char b[32];
+  std::snprintf(b, sizeof b, "%0*lld%02lld.%04lld,%c", deg_digits, units / 600000, (units % 600000) / 10000,
+                units % 10000, deg < 0.0 ? neg : pos);
+  return b;
+}
+
+// An angle [rad] in degrees [0, 360) rounded to 0.1, as printed: 359.96 deg is 0.0, not "360.0".
+double tenthsOfDegree(double rad) {
+  const double d = std::round(wrapDeg360(radToDeg(rad)) * 10.0) / 10.0;
+  return d >= 360.0 ? 0.0 : d;
+}
+
+}  // namespace
+
+std::string encodeRmc(const RmcOut& r, const std::string& talker) {
+  const double t = std::floor(r.unix_time * 100.0 + 0.5) / 100.0;  // to the 1/100 s printed
+  const long long days = static_cast<long long>(std::floor(t / 86400.0));
+  const double sod = t - static_cast<double>(days) * 86400.0;
+  const std::time_t midnight = static_cast<std::time_t>(days * 86400);
+  std::tm date{};
+  gmtime_r(&midnight, &date);  // the civil date, from the C library
+  char b[160];
+  std::snprintf(b, sizeof b, "%sRMC,%02d%02d%05.2f,%c,%s,%s,%.1f,%.1f,%02d%02d%02d,,,%c", talker.c_str(),
+                static_cast<int>(sod / 3600.0), static_cast<int>(std::fmod(sod, 3600.0) / 60.0), std::fmod(sod, 60.0),
+                r.valid ? 'A' : 'V', angle(r.lat_deg, 2, 'N', 'S').c_str(), angle(r.lon_deg, 3, 'E', 'W').c_str(),
+                mpsToKnots(r.speed), tenthsOfDegree(r.course), date.tm_mday, date.tm_mon + 1, date.tm_year % 100,
+                r.valid ? 'A' : 'N');
+  return nmea::withChecksum('$', b);
+}
+
+std::string encodeHdt(double heading, const std::string& talker) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%sHDT,%.1f,T", talker.c_str(), tenthsOfDegree(heading));
+  return nmea::withChecksum('$', b);
+}
+
+}  // namespace gnss
 
 namespace arpa {
 

@@ -19,9 +19,6 @@ constexpr const char* kOwn = "odometry";
 
 void AutopilotBridgeConfig::validate() const {
   static const std::set<std::string> known{"APB", "RMB", "XTE", "HSC"};
-  if (origin_scenario.empty() && !origin_lat_deg)
-    throw std::invalid_argument(
-        "origin_lat_deg and origin_lon_deg (or origin_scenario) are required (map origin)");
   if (talker.size() != 2)
     throw std::invalid_argument("talker must be two characters (e.g. EC, GP)");
   for (const std::string& s : sentences)

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -556,13 +557,13 @@ Mmg3DofParams loadVesselPreset(const std::string& name_or_path, const std::strin
     std::string dir = preset_dir;
     if (dir.empty()) {
       // The environment overrides the presets shipped with the package (ASV_CORE_PRESET_DIR is set
-      // by CMake to src/config/vessels).
+      // by CMake to src/config/vessels, ASV_CORE_INSTALLED_PRESET_DIR to the installed copy).
       const char* envdir = std::getenv("ASV_VESSEL_PRESET_DIR");
       if (envdir != nullptr && *envdir != '\0') {
         dir = envdir;
       } else {
 #ifdef ASV_CORE_PRESET_DIR
-        dir = ASV_CORE_PRESET_DIR;
+        dir = std::filesystem::is_directory(ASV_CORE_PRESET_DIR) ? ASV_CORE_PRESET_DIR : ASV_CORE_INSTALLED_PRESET_DIR;
 #else
         throw std::runtime_error("loadVesselPreset: '" + name_or_path +
                                  "' is a preset name but no preset directory was given and "

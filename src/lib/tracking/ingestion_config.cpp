@@ -22,9 +22,6 @@ void IngestionConfig::readShared(const ParamMap& p) {
 }
 
 void IngestionConfig::validateShared() const {
-  if (origin_scenario.empty() && !has_origin)
-    throw std::invalid_argument(
-        "origin_lat_deg and origin_lon_deg (or origin_scenario) are required (origin of the map frame)");
   if (!(std::fabs(origin_lat_deg) <= 90.0) || !(std::fabs(origin_lon_deg) <= 180.0))
     throw std::invalid_argument("origin_lat_deg/origin_lon_deg out of range");
   if (frame_id.empty())

@@ -65,6 +65,7 @@ OwnShipConfig OwnShipConfig::fromParams(const ParamMap& p) {
   c.heading_sigma = degToRad(p.getDouble("heading_sigma_deg", radToDeg(c.heading_sigma)));
   c.cog_heading_sigma = degToRad(p.getDouble("cog_heading_sigma_deg", radToDeg(c.cog_heading_sigma)));
   c.watch = InputWatchConfig::fromParams(p, c.watch);
+  c.navsat = p.getBool("navsat", c.navsat);
   c.validate();
   return c;
 }
@@ -77,7 +78,32 @@ OwnShipEstimator::OwnShipEstimator(const OwnShipConfig& config, const LocalFrame
 }
 
 double OwnShipEstimator::sigmaOf(const gnss::Fix& fix) const {
+  if (fix.sigma)
+    return *fix.sigma;
   return fix.hdop.value_or(kDefaultHdop) * rangeError(fix.quality);
+}
+
+OwnShipEstimator::Use OwnShipEstimator::position(const gnss::Fix& fix, const char* source, double t, double wall,
+                                                 std::string& why) {
+  if (!validLatLon(fix.lat_deg, fix.lon_deg) || fix.quality == gnss::Quality::kNone ||
+      (fix.sigma && !(*fix.sigma >= 0.0 && std::isfinite(*fix.sigma)))) {
+    why = std::string(source) + ": no fix";
+    ++rejected_;
+    return Use::kRejected;
+  }
+  return takeFix(fix, source, t, wall, why);
+}
+
+void OwnShipEstimator::motion(const gnss::Motion& m, double t) {
+  course_ = m.course;
+  speed_ = m.speed;
+  motion_time_ = t;
+}
+
+void OwnShipEstimator::heading(double value, double t, double wall) {
+  heading_ = value;
+  heading_time_ = t;
+  watch_.received(kHeading, t, wall);
 }
 
 OwnShipEstimator::Use OwnShipEstimator::takeFix(const gnss::Fix& fix, const char* source, double t,
@@ -129,24 +155,18 @@ OwnShipEstimator::Use OwnShipEstimator::feed(const nmea::Sentence& s, double t, 
   if (s.is("GNS") && (e = gnss::parseGns(s, fix)) == gnss::Error::kNone)
     return takeFix(fix, "GNS", t, wall, why);
   if (s.is("RMC") && (e = gnss::parseRmc(s, fix, motion, rmc_variation_)) == gnss::Error::kNone) {
-    course_ = motion.course;
-    speed_ = motion.speed;
-    motion_time_ = t;
+    this->motion(motion, t);
     return takeFix(fix, "RMC", t, wall, why);
   }
   if (s.is("VTG") && (e = gnss::parseVtg(s, motion)) == gnss::Error::kNone) {
-    course_ = motion.course;
-    speed_ = motion.speed;
-    motion_time_ = t;
+    this->motion(motion, t);
     return Use::kUsed;
   }
   const std::optional<double> variation = cfg_.variation ? cfg_.variation : rmc_variation_;
   if ((s.is("HDT") && (e = gnss::parseHdt(s, value)) == gnss::Error::kNone) ||
       (s.is("THS") && (e = gnss::parseThs(s, value)) == gnss::Error::kNone) ||
       (s.is("HDG") && (e = gnss::parseHdg(s, variation, value)) == gnss::Error::kNone)) {
-    heading_ = value;
-    heading_time_ = t;
-    watch_.received(kHeading, t, wall);
+    heading(value, t, wall);
     return Use::kUsed;
   }
   if (s.is("ROT") && (e = gnss::parseRot(s, value)) == gnss::Error::kNone) {

@@ -41,6 +41,7 @@ struct Fix {
   Quality quality = Quality::kNone;
   std::optional<double> hdop;
   std::optional<int> satellites;
+  std::optional<double> sigma;  // [m] horizontal 1-sigma when the source states it (NavSatFix covariance)
 };
 
 struct Motion {

@@ -51,10 +51,29 @@ BitWriter encodeStaticDataReport(std::uint32_t mmsi, const StaticDataReport& d);
 
 // Splits a payload into !AIVDM sentences of at most `max_chars` payload characters each (60 keeps
 // every sentence within the 82-character limit). Multi-fragment messages carry `seq_id` (0-9).
+// `formatter` "VDO": the own ship's transponder's sentences.
 std::vector<std::string> toSentences(const BitWriter& payload, char channel, int seq_id,
-                                     const std::string& talker = "AI", std::size_t max_chars = 60);
+                                     const std::string& talker = "AI", std::size_t max_chars = 60,
+                                     const std::string& formatter = "VDM");
 
 }  // namespace ais
+
+namespace gnss {
+
+struct RmcOut {
+  double unix_time = 0.0;  // [s] UTC of the fix, seconds since 1970-01-01
+  double lat_deg = 0.0, lon_deg = 0.0;
+  double speed = 0.0;   // [m/s] over ground
+  double course = 0.0;  // [rad] true course over ground
+  bool valid = true;    // false: status V, mode N (a chart plotter shows no position)
+};
+
+// "$GPRMC,hhmmss.ss,A,ddmm.mmmm,N,dddmm.mmmm,E,knots,deg,ddmmyy,,,A" (NMEA 2.3, mode A).
+std::string encodeRmc(const RmcOut& r, const std::string& talker = "GP");
+// "$HEHDT,deg,T": a true heading [rad].
+std::string encodeHdt(double heading, const std::string& talker = "HE");
+
+}  // namespace gnss
 
 namespace arpa {
 

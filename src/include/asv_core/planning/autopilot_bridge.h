@@ -29,7 +29,8 @@ namespace asv {
 // asv_planning/config/autopilot_bridge.yaml documents every key.
 struct AutopilotBridgeConfig {
   // The map frame's origin, for RMB's waypoint position: origin_scenario (a scenario file's origin) or
-  // origin_lat_deg/origin_lon_deg (both; the stack's other nodes use the same keys)
+  // origin_lat_deg/origin_lon_deg (both; the stack's other nodes use the same keys); neither: the
+  // run's /map_origin
   std::string origin_scenario;
   std::optional<double> origin_lat_deg, origin_lon_deg;
   std::string talker = "EC";  // NMEA talker of the sentences (EC: electronic chart system)

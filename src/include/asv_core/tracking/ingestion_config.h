@@ -16,8 +16,8 @@ namespace asv {
 
 // The keys both nodes share, with the same meaning.
 struct IngestionConfig {
-  // The map frame's origin: origin_scenario (a scenario file whose origin the node takes, so that a
-  // launch takes it from the scenario it runs) or origin_lat_deg/origin_lon_deg.
+  // The map frame's origin when the node is given its own: origin_scenario (a scenario file whose origin
+  // the node takes) or origin_lat_deg/origin_lon_deg. Neither: the node takes the run's /map_origin.
   std::string origin_scenario;
   bool has_origin = false;
   double origin_lat_deg = 0.0;

@@ -47,6 +47,9 @@ struct OwnShipConfig : IngestionConfig {
   double heading_sigma = degToRad(1.0);       // [rad] heading sensor 1-sigma
   double cog_heading_sigma = degToRad(10.0);  // [rad] course over ground standing in for heading
   InputWatchConfig watch{2.0, 10.0, 0.5};     // watch/*: fix and heading stale after 2 s: alarm
+  // The node also reads a receiver's ROS topics (sensor_msgs/NavSatFix on fix, ENU velocity on vel,
+  // ENU orientation on heading), as a GNSS driver such as nmea_navsat_driver publishes them.
+  bool navsat = false;
 
   void validate() const;
   static OwnShipConfig fromParams(const ParamMap& params);
@@ -72,6 +75,13 @@ public:
   enum class Use { kUsed, kNotNavigation, kRejected };
   // A framed sentence received at `t` [s, node clock] and `wall` [s]; kRejected fills `why`.
   Use feed(const nmea::Sentence& s, double t, double wall, std::string& why);
+  // A position from a receiver that is not read as NMEA (a NavSatFix), named `source`; fix.sigma, when
+  // set, replaces the quality's error. An invalid position is kRejected.
+  Use position(const gnss::Fix& fix, const char* source, double t, double wall, std::string& why);
+  // Course [rad] and speed [m/s] over ground, as RMC's or VTG's.
+  void motion(const gnss::Motion& m, double t);
+  // True heading [rad] from a heading sensor, as HDT's.
+  void heading(double heading, double t, double wall);
   // Her own AIS position report (already decoded).
   void aisReport(double lat_deg, double lon_deg, bool accurate, std::optional<double> course,
                  std::optional<double> speed, std::optional<double> heading, double t);
