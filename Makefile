@@ -19,13 +19,14 @@ CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_CXX_FLAGS="$(CXXFLAGS_EXTRA)"
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test bench benchmark demo clean format lint eval eval-ros dssa-results soak test-asan fuzz-long
+.PHONY: help setup build test install bench benchmark demo clean format lint eval eval-ros dssa-results soak test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
 	@echo "  make demo    install what is missing, build, run the headline scenario through ROS"
 	@echo "  make test    install what is missing, build, run every unit test and rostest"
 	@echo "  make build   build the catkin workspace (build/, devel/)"
+	@echo "  make install install every package into install/ (source install/setup.bash)"
 	@echo "  make bench   run the Google Benchmark executables, JSON into out/bench/"
 	@echo "  make eval    every scenario with every planner through asv_batch (out/eval/)"
 	@echo "  make benchmark  generated situations (tuning and test seed ranges) x every planner: out/benchmark/"
@@ -59,9 +60,17 @@ test: build
 	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING|ModuleNotFoundError|ImportError" build/run_tests.log || true
 	@scripts/fuzz_smoke.sh || true
 	@scripts/catkin_lint_check.py build/test_results/catkin_lint.xml || true
+	@$(DEVEL) && scripts/readme_check.py build/test_results/readme_check.xml || true
+	@JOBS=$(JOBS) scripts/install_check.py build/test_results/install_check.xml || true
 	@if [ "$(ASAN)" = 1 ]; then echo "test: asv_core unit tests under ASan+UBSan (build_asan/, log build/asan.log)..."; \
 	  JOBS=$(JOBS) scripts/asan_tests.sh > build/asan.log 2>&1 || true; fi
 	@scripts/test_summary.py build/test_results
+
+# The install space (install/): every package's nodes, launch files, configs, scenarios and headers.
+# make test checks it on its own (scripts/install_check.py). Then: source install/setup.bash.
+install: build
+	@$(CATKIN) -j$(JOBS) install
+	@touch install/CATKIN_IGNORE  # install/ lies in the source space: catkin must not find its packages twice
 
 bench: build
 	@mkdir -p out/bench

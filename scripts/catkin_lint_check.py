@@ -11,17 +11,14 @@ import os
 import shutil
 import subprocess
 import sys
-from xml.sax.saxutils import escape, quoteattr
+
+import junit_case
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 
 def main():
-    if len(sys.argv) != 2 or sys.argv[1] in ("-h", "--help"):
-        print(__doc__)
-        return 0 if len(sys.argv) == 2 else 2
-    out = sys.argv[1]
-    os.makedirs(os.path.dirname(out) or ".", exist_ok=True)
+    out = junit_case.out_path(__doc__)
     exe = shutil.which("catkin_lint")
     if exe is None:
         lines, rc = ["catkin_lint not installed (scripts/setup installs Debian's catkin-lint)"], 2
@@ -32,12 +29,9 @@ def main():
                  if ": error:" in l or ": warning:" in l or l.startswith("catkin_lint: checked")]
         rc = 0 if p.returncode == 0 else 1
     findings = [l for l in lines if not l.startswith("catkin_lint: checked")]
-    body = "" if rc == 0 else "<failure message=%s>%s</failure>" % (
-        quoteattr("%d finding(s)" % len(findings) if rc == 1 else lines[0]), escape("\n".join(lines)))
-    with open(out, "w") as f:
-        f.write('<?xml version="1.0" encoding="utf-8"?>\n<testsuite name="catkin_lint" tests="1" '
-                'failures="%d"><testcase classname="catkin_lint" name="W1_clean">%s</testcase></testsuite>\n'
-                % (0 if rc == 0 else 1, body))
+    junit_case.write(out, "catkin_lint", "W1_clean",
+                     None if rc == 0 else ("%d finding(s)" % len(findings) if rc == 1 else lines[0]),
+                     "\n".join(lines))
     print("catkin_lint -W1: " + ("clean" if rc == 0 else "; ".join(findings) or lines[0]))
     return rc
 

@@ -222,7 +222,17 @@ void PlannerNode::checkClock() {
 
 void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
   checkClock();
-  const std::optional<asv::ShipState> s = shipStateFromOdometry(*msg, params_.ship);
+  // Odometry in another frame (a GNSS/INS driver's odom or utm) is moved into map; no frame is map.
+  tf2::Transform t;
+  if (!msg->header.frame_id.empty() && !frames_.get(msg->header.frame_id, msg->header.stamp, t)) {
+    ROS_WARN_THROTTLE(5.0, "planner_node: odometry in frame '%s', which tf2 does not connect to '%s': ignored",
+                      msg->header.frame_id.c_str(), params_.frame_id.c_str());
+    return;
+  }
+  nav_msgs::Odometry o = *msg;
+  if (!msg->header.frame_id.empty())
+    o.pose.pose = asv_ros::transformPose(t, msg->pose.pose);  // the twist stays in the body frame (REP 105)
+  const std::optional<asv::ShipState> s = shipStateFromOdometry(o, params_.ship);
   if (!s) {
     ROS_WARN_THROTTLE(5.0, "planner_node: non-finite odometry ignored");
     return;
@@ -253,9 +263,19 @@ void PlannerNode::alarmCallback(const asv_msgs::Alarm::ConstPtr& msg) {
 }
 
 void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) {
-  if (!std::isfinite(msg->pose.position.x) || !std::isfinite(msg->pose.position.y))
+  // A goal in another frame (rviz's goal tool in its fixed frame, a chart's `utm`) is moved into map;
+  // no frame at all is taken as map, as rostopic pub writes it.
+  tf2::Transform t;
+  if (!msg->header.frame_id.empty() && !frames_.get(msg->header.frame_id, msg->header.stamp, t)) {
+    ROS_WARN("planner_node: goal in frame '%s', which tf2 does not connect to '%s': ignored",
+             msg->header.frame_id.c_str(), params_.frame_id.c_str());
     return;
-  params_.goal = {msg->pose.position.x, msg->pose.position.y};
+  }
+  const geometry_msgs::Pose g = msg->header.frame_id.empty() ? msg->pose : asv_ros::transformPose(t, msg->pose);
+  if (!std::isfinite(g.position.x) || !std::isfinite(g.position.y))
+    return;
+  ROS_INFO("planner_node: new goal (%.0f, %.0f) m in %s", g.position.x, g.position.y, params_.frame_id.c_str());
+  params_.goal = {g.position.x, g.position.y};
   params_.has_goal = true;
   if (follower_)
     follower_->setGoal(params_.goal);  // replans towards the new goal

@@ -24,6 +24,7 @@
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/alarm.h>
+#include <asv_ros/frames.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -77,6 +78,7 @@ private:
   std::vector<asv::StaticObstacle> aid_obstacles_;  // one per aid to navigation
   ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_, aids_sub_;
   ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_;
+  asv_ros::FrameLookup frames_{params_.frame_id};  // odometry and goals in any frame tf2 connects to map
   diagnostic_updater::Updater updater_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kPlanning};
 
