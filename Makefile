@@ -69,8 +69,8 @@ test: build
 # The install space (install/): every package's nodes, launch files, configs, scenarios and headers.
 # make test checks it on its own (scripts/install_check.py). Then: source install/setup.bash.
 install: build
+	@mkdir -p install && touch install/CATKIN_IGNORE  # install/ lies in the source space: catkin must not find its packages twice
 	@$(CATKIN) -j$(JOBS) install
-	@touch install/CATKIN_IGNORE  # install/ lies in the source space: catkin must not find its packages twice
 
 bench: build
 	@mkdir -p out/bench

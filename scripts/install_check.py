@@ -14,6 +14,7 @@ Exit status 1 when a step fails (its output in the case's failure).
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -30,12 +31,20 @@ int main() { return 0; }
 
 
 def step(name, cmd, env=None, timeout=1200):
+    """Runs `cmd` in a process group of its own: on a timeout the whole group (a launch's nodes and
+    master too) is killed."""
     print("install_check: " + name, flush=True)
-    p = subprocess.run(cmd, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                       timeout=timeout)
+    p = subprocess.Popen(cmd, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                         start_new_session=True)
+    try:
+        out = p.communicate(timeout=timeout)[0]
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
+        raise RuntimeError("%s did not finish within %d s" % (name, timeout))
     if p.returncode != 0:
-        raise RuntimeError("%s failed (exit %d):\n%s" % (name, p.returncode, p.stdout[-3000:]))
-    return p.stdout
+        raise RuntimeError("%s failed (exit %d):\n%s" % (name, p.returncode, out[-3000:]))
+    return out
 
 
 def fresh_env():
@@ -57,10 +66,12 @@ def fresh_env():
 
 def check():
     jobs = os.environ.get("JOBS", "2")
+    # install/ lies in the source space: without this (first, so that a failed install leaves it too),
+    # catkin and rostest would find every package twice.
+    os.makedirs(INSTALL, exist_ok=True)
+    open(os.path.join(INSTALL, "CATKIN_IGNORE"), "w").close()
     step("catkin_make install", ["catkin_make", "--source", ROOT, "--build", os.path.join(ROOT, "build"),
                                  "-j" + jobs, "install"])
-    # install/ lies in the source space: without this, catkin and rostest find every package twice.
-    open(os.path.join(INSTALL, "CATKIN_IGNORE"), "w").close()
     tmp = tempfile.mkdtemp(prefix="asv_install_")
     with open(os.path.join(tmp, "plugin.cpp"), "w") as f:
         f.write(PLUGIN)

@@ -89,8 +89,11 @@ def check_rosrun(words, built):
     if not options:
         return None
     run = path if os.access(path, os.X_OK) else script
-    text = subprocess.run([run, "--help"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                          timeout=60).stdout
+    try:
+        text = subprocess.run([run, "--help"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                              timeout=60).stdout
+    except (OSError, subprocess.SubprocessError) as e:
+        return "%s --help failed: %s" % (exe, e)
     missing = [o for o in options if o not in text]
     return "%s --help does not know %s" % (exe, ", ".join(missing)) if missing else None
 

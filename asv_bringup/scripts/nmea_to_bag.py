@@ -88,9 +88,12 @@ def is_gpsd_json(path):
     """True when the first line holding a '{' has only a time column (or nothing) before it."""
     with open(path, errors="replace") as f:
         for line in f:
-            if line.strip():
-                brace = line.find("{")
-                return brace >= 0 and not any(c in line[:brace] for c in "!$\\")
+            brace = line.find("{")
+            sentence = min((line.find(c) for c in "!$\\" if c in line), default=-1)
+            if sentence >= 0 and (brace < 0 or sentence < brace):
+                return False  # an NMEA sentence comes first
+            if brace >= 0:
+                return True
     return False
 
 

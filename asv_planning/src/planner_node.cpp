@@ -266,7 +266,7 @@ void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) 
   // A goal in another frame (rviz's goal tool in its fixed frame, a chart's `utm`) is moved into map;
   // no frame at all is taken as map, as rostopic pub writes it.
   tf2::Transform t;
-  if (!msg->header.frame_id.empty() && !frames_.get(msg->header.frame_id, msg->header.stamp, t)) {
+  if (!msg->header.frame_id.empty() && !frames_.get(msg->header.frame_id, msg->header.stamp, t, true)) {
     ROS_WARN("planner_node: goal in frame '%s', which tf2 does not connect to '%s': ignored",
              msg->header.frame_id.c_str(), params_.frame_id.c_str());
     return;

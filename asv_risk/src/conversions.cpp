@@ -172,12 +172,13 @@ bool enuTwistToMotion(const geometry_msgs::TwistStamped& msg, asv::gnss::Motion&
   return true;
 }
 
-bool enuOrientationToHeading(const geometry_msgs::QuaternionStamped& msg, double& heading) {
+bool orientationToHeading(const geometry_msgs::QuaternionStamped& msg, bool yaw_is_bearing, double& heading) {
   const auto& q = msg.quaternion;
   const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
   if (!std::isfinite(norm) || std::fabs(norm - 1.0) > 1e-3)
     return false;
-  heading = asv::yawToCourse(tf2::getYaw(q));
+  const double yaw = tf2::getYaw(q);
+  heading = yaw_is_bearing ? asv::wrapTwoPi(yaw) : asv::yawToCourse(yaw);
   return true;
 }
 

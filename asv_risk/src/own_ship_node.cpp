@@ -143,7 +143,7 @@ void OwnShipNode::velCallback(const geometry_msgs::TwistStamped& msg) {
 
 void OwnShipNode::headingCallback(const geometry_msgs::QuaternionStamped& msg) {
   double h = 0.0;
-  if (!enuOrientationToHeading(msg, h)) {
+  if (!orientationToHeading(msg, params_.navsat_heading_is_bearing, h)) {
     ++navsat_rejected_;
     reject("heading: a quaternion that is no rotation");
     return;

@@ -33,11 +33,15 @@ PlotterNode::PlotterNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
       config_, asv::LocalFrame(map_origin_->get().lat_deg, map_origin_->get().lon_deg));
   output_ = std::make_unique<asv_ros::NmeaOutput>(output_config_);  // throws naming the device
   odom_sub_ = nh_.subscribe<nav_msgs::Odometry>("odom", 10, [this](const nav_msgs::Odometry::ConstPtr& m) {
+    if (!inMap(m->header.frame_id, "odometry"))
+      return;
     odom_ = m;
     odom_time_ = ros::Time::now();
   });
   targets_sub_ =
       nh_.subscribe<asv_msgs::TargetArray>("targets", 10, [this](const asv_msgs::TargetArray::ConstPtr& m) {
+        if (!inMap(m->header.frame_id, "targets"))
+          return;
         targets_ = m;
         targets_time_ = ros::Time::now();
       });
@@ -56,6 +60,14 @@ PlotterNode::PlotterNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   ROS_INFO("plotter_node: %s, %s and %s -> %s at %.1f Hz", odom_sub_.getTopic().c_str(),
            targets_sub_.getTopic().c_str(), risk_sub_.getTopic().c_str(), output_->describe().c_str(),
            config_.rate);
+}
+
+// Positions are read in map only (what the pipeline publishes): another frame is refused, not misplaced.
+bool PlotterNode::inMap(const std::string& frame, const char* what) const {
+  if (frame.empty() || frame == "map" || frame == "/map")
+    return true;
+  ROS_WARN_THROTTLE(10.0, "plotter_node: %s in frame '%s', not map: ignored", what, frame.c_str());
+  return false;
 }
 
 void PlotterNode::forward(const asv_msgs::NmeaSentence& msg) {

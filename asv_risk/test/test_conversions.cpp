@@ -148,9 +148,11 @@ TEST(Conversions, EnuVelocityAndOrientationBecomeCourseSpeedAndHeading) {
   q.quaternion.z = std::sin(asv::degToRad(15.0));
   q.quaternion.w = std::cos(asv::degToRad(15.0));
   double h = 0.0;
-  ASSERT_TRUE(asv_risk::enuOrientationToHeading(q, h));
+  ASSERT_TRUE(asv_risk::orientationToHeading(q, false, h));
   EXPECT_NEAR(asv::radToDeg(h), 60.0, 1e-9);
+  ASSERT_TRUE(asv_risk::orientationToHeading(q, true, h));  // nmea_navsat_driver: the yaw is HDT itself
+  EXPECT_NEAR(asv::radToDeg(h), 30.0, 1e-9);
   q.quaternion.w = 0.0;
   q.quaternion.z = 0.0;  // the zero quaternion is no rotation
-  EXPECT_FALSE(asv_risk::enuOrientationToHeading(q, h));
+  EXPECT_FALSE(asv_risk::orientationToHeading(q, false, h));
 }

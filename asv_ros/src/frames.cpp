@@ -7,7 +7,7 @@
 namespace asv_ros {
 
 bool lookupInto(const tf2::BufferCore& buffer, const std::string& working, const std::string& frame,
-                const ros::Time& stamp, tf2::Transform& out) {
+                const ros::Time& stamp, tf2::Transform& out, bool latest_ok) {
   if (frame.empty())
     return false;
   const std::string f = frame[0] == '/' ? frame.substr(1) : frame;
@@ -20,7 +20,7 @@ bool lookupInto(const tf2::BufferCore& buffer, const std::string& working, const
       tf2::fromMsg(buffer.lookupTransform(working, f, t).transform, out);
       return true;
     } catch (const tf2::TransformException&) {
-      if (t.isZero())
+      if (t.isZero() || !latest_ok)
         return false;
     }
   }

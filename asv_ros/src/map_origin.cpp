@@ -26,6 +26,8 @@ asv::GeoPoint pointOf(const sensor_msgs::NavSatFix& msg) {
 asv::GeoPoint waitForOrigin(const ros::NodeHandle& nh, const std::string& node) {
   double timeout = kMapOriginTimeout;
   getParam(nh, "/map_origin_timeout", timeout);
+  if (!(timeout > 0.0 && std::isfinite(timeout)))
+    throw std::invalid_argument("/map_origin_timeout must be a finite number of seconds > 0");
   ros::CallbackQueue queue;
   ros::NodeHandle wait_nh(nh);
   wait_nh.setCallbackQueue(&queue);

@@ -47,7 +47,8 @@ TEST(Frames, WorkingFrameIsIdentityAndUnknownFramesFail) {
   EXPECT_NEAR(t.getOrigin().length(), 0.0, 1e-12);
   EXPECT_FALSE(asv_ros::lookupInto(b, "map", "", ros::Time(1.0), t));
   EXPECT_FALSE(asv_ros::lookupInto(b, "map", "odom", ros::Time(1.0), t));  // nothing connects it
-  // A dynamic transform asked at a time it does not cover: the latest one is taken.
-  ASSERT_TRUE(asv_ros::lookupInto(b, "map", "utm_local", ros::Time(500.0), t));
+  // A dynamic transform asked at a time it does not cover: refused, unless the latest is asked for.
+  EXPECT_FALSE(asv_ros::lookupInto(b, "map", "utm_local", ros::Time(500.0), t));
+  ASSERT_TRUE(asv_ros::lookupInto(b, "map", "utm_local", ros::Time(500.0), t, true));
   EXPECT_NEAR(t.getOrigin().x(), 100.0, 1e-9);
 }

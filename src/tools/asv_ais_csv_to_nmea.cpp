@@ -40,7 +40,8 @@ const char* const kUsage =
     "With --gpsd-json the log is gpsd's JSON (gpspipe -w, gpsdecode; scaled or -u unscaled), one object\n"
     "a line: AIS types 1-3, 18 and 19 are the position reports, types 5, 19 and 24 give each vessel's name\n"
     "and size. gpsd's AIS objects carry no time: a report takes its line's leading time column (gpspipe\n"
-    "-t: 'YYYY-MM-DD HH:MM:SS: {...}', or UNIX seconds) or else the time of the last TPV object; a report\n"
+    "-t -Z: 'YYYY-MM-DD HH:MM:SS: {...}', UTC; without -Z gpspipe writes local time, which is read as UTC;\n"
+    "or UNIX seconds) or else the time of the last TPV object; a report\n"
     "before any time is refused as untimed. Other classes and types are skipped, counted.\n"
     "\n"
     "  CSV, LOG          the log\n"
@@ -181,6 +182,18 @@ void takeStatic(const YAML::Node& o, GpsdStatic& s) {
     s.beam_m = o["to_port"].as<double>() + o["to_starboard"].as<double>();
 }
 
+// A number of a gpsd object, or `fallback` when absent or not a number (scaled gpsd writes "nan" for a
+// speed not available and "fast" for 102.2 kn or more).
+double numberOr(const YAML::Node& o, const char* key, double fallback) {
+  if (!o[key])
+    return fallback;
+  const std::string text = o[key].as<std::string>();
+  if (text == "fast")
+    return 102.2;
+  double x = 0.0;
+  return toolNumber(text, x) && std::isfinite(x) ? x : fallback;
+}
+
 // A position report's fields, scaled (degrees, knots) or not (1/600000 deg, 1/10 kn, 1/10 deg), with
 // gpsd's "not available" values left out. False for no position.
 bool takePosition(const YAML::Node& o, AisLogReport& r) {
@@ -189,12 +202,12 @@ bool takePosition(const YAML::Node& o, AisLogReport& r) {
   r.position = {o["lat"].as<double>() * deg, o["lon"].as<double>() * deg};
   if (!validLatLon(r.position.lat_deg, r.position.lon_deg))
     return false;
-  const double sog = o["speed"] ? o["speed"].as<double>() * tenth : 102.3;
+  const double sog = numberOr(o, "speed", scaled ? 102.3 : 1023.0) * tenth;  // "fast" only in scaled output
   // Not available stays so (NaN encodes as 102.3): the report is a receiver's, not a row to repair.
   r.sog_kn = sog >= 102.25 ? std::nan("") : sog;
-  const double cog = o["course"] ? o["course"].as<double>() * tenth : 360.0;
+  const double cog = numberOr(o, "course", scaled ? 360.0 : 3600.0) * tenth;
   r.cog_deg = cog < 360.0 ? std::optional<double>(cog) : std::nullopt;
-  const double hdg = o["heading"] ? o["heading"].as<double>() : 511.0;
+  const double hdg = numberOr(o, "heading", 511.0);
   r.heading_deg = hdg < 360.0 ? std::optional<double>(hdg) : std::nullopt;
   return true;
 }

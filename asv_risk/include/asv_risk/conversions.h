@@ -45,8 +45,9 @@ bool navSatToFix(const sensor_msgs::NavSatFix& msg, asv::gnss::Fix& fix, std::st
 // False for a value that is no number.
 bool enuTwistToMotion(const geometry_msgs::TwistStamped& msg, asv::gnss::Motion& motion);
 
-// An orientation in ENU (REP 103) as a true heading [rad]. False for a quaternion that is no rotation.
-bool enuOrientationToHeading(const geometry_msgs::QuaternionStamped& msg, double& heading);
+// An orientation as a true heading [rad]: its yaw taken as ENU (REP 103), or with `yaw_is_bearing` as
+// the compass bearing itself (nmea_navsat_driver's heading). False for a quaternion that is no rotation.
+bool orientationToHeading(const geometry_msgs::QuaternionStamped& msg, bool yaw_is_bearing, double& heading);
 
 // Fills a TargetRisk message from the core result.
 asv_msgs::TargetRisk toMsg(const asv::TargetRisk& r, uint32_t mmsi);

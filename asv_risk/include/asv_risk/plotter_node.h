@@ -34,6 +34,7 @@ public:
 private:
   void tick();
   void forward(const asv_msgs::NmeaSentence& msg);
+  bool inMap(const std::string& frame, const char* what) const;
   std::optional<asv::PlotterOwn> own(const ros::Time& now) const;
   std::vector<asv::PlotterTarget> targets(const ros::Time& now) const;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);

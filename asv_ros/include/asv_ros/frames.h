@@ -16,10 +16,11 @@
 namespace asv_ros {
 
 // `out` takes a pose in `frame` into `working`: identity for the working frame itself (a leading '/'
-// ignored), else tf2's transform at `stamp`, or the latest one when there is none at `stamp` (a static
-// transform, or a slower publisher). False for an empty frame or one tf2 cannot connect.
+// ignored), else tf2's transform at `stamp`; with `latest_ok`, the latest one when there is none at
+// `stamp` (a goal is placed once, by the transform known now). False for an empty frame or one tf2
+// cannot connect (at `stamp`: a dead transform publisher is not used forever).
 bool lookupInto(const tf2::BufferCore& buffer, const std::string& working, const std::string& frame,
-                const ros::Time& stamp, tf2::Transform& out);
+                const ros::Time& stamp, tf2::Transform& out, bool latest_ok = false);
 
 // A pose moved by `t` (position and orientation).
 geometry_msgs::Pose transformPose(const tf2::Transform& t, const geometry_msgs::Pose& pose);
@@ -28,8 +29,8 @@ geometry_msgs::Pose transformPose(const tf2::Transform& t, const geometry_msgs::
 class FrameLookup {
 public:
   explicit FrameLookup(std::string working);
-  bool get(const std::string& frame, const ros::Time& stamp, tf2::Transform& out) const {
-    return lookupInto(buffer_, working_, frame, stamp, out);
+  bool get(const std::string& frame, const ros::Time& stamp, tf2::Transform& out, bool latest_ok = false) const {
+    return lookupInto(buffer_, working_, frame, stamp, out, latest_ok);
   }
   const std::string& working() const { return working_; }
 

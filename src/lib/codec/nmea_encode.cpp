@@ -8,6 +8,17 @@
 #include "asv_core/common/units.h"
 
 namespace asv {
+
+namespace {
+
+// An angle [rad] in degrees [0, 360) rounded to 0.1, as printed: 359.96 deg is 0.0, not "360.0".
+double tenthsOfDegree(double rad) {
+  const double d = std::round(wrapDeg360(radToDeg(rad)) * 10.0) / 10.0;
+  return d >= 360.0 ? 0.0 : d;
+}
+
+}  // namespace
+
 namespace nmea {
 
 std::string withChecksum(char start, const std::string& body) {
@@ -226,12 +237,6 @@ std::string angle(double deg, int deg_digits, char pos, char neg) {
   return b;
 }
 
-// An angle [rad] in degrees [0, 360) rounded to 0.1, as printed: 359.96 deg is 0.0, not "360.0".
-double tenthsOfDegree(double rad) {
-  const double d = std::round(wrapDeg360(radToDeg(rad)) * 10.0) / 10.0;
-  return d >= 360.0 ? 0.0 : d;
-}
-
 }  // namespace
 
 std::string encodeRmc(const RmcOut& r, const std::string& talker) {
@@ -271,17 +276,22 @@ std::string encodeTtm(const TtmOut& t, const std::string& talker) {
   };
   std::string utc;
   if (t.utc_seconds_of_day >= 0.0) {
-    const double s = std::fmod(t.utc_seconds_of_day, 86400.0);
+    // Rounded to the 1/100 s printed first, so that 59.996 s is the next minute, never "60.00".
+    const double s = std::fmod(std::round(t.utc_seconds_of_day * 100.0) / 100.0, 86400.0);
     char b[16];
     std::snprintf(b, sizeof b, "%02d%02d%05.2f", static_cast<int>(s / 3600),
                   static_cast<int>(std::fmod(s, 3600) / 60), std::fmod(s, 60.0));
     utc = b;
   }
+  // A name keeps the sentence within 82 characters and holds no field or checksum delimiter.
+  std::string name;
+  for (char c : t.name.substr(0, 20))
+    if (c != ',' && c != '*' && c != '$' && c != '!' && c != '\\')
+      name += c;
   std::snprintf(buf, sizeof buf, "%sTTM,%02d,%.2f,%.1f,T,%.1f,%.1f,T,%s,%s,N,%s,%c,,%s,%c", talker.c_str(),
-                t.number % 1000, metresToNm(t.distance), wrapDeg360(radToDeg(t.bearing)), mpsToKnots(t.speed),
-                wrapDeg360(radToDeg(t.course)), opt(t.cpa, 1.0 / kMetresPerNauticalMile, "%.2f").c_str(),
-                opt(t.tcpa, 1.0 / 60.0, "%.1f").c_str(), t.name.c_str(), t.status, utc.c_str(),
-                t.acquisition);
+                t.number % 1000, metresToNm(t.distance), tenthsOfDegree(t.bearing), mpsToKnots(t.speed),
+                tenthsOfDegree(t.course), opt(t.cpa, 1.0 / kMetresPerNauticalMile, "%.2f").c_str(),
+                opt(t.tcpa, 1.0 / 60.0, "%.1f").c_str(), name.c_str(), t.status, utc.c_str(), t.acquisition);
   return nmea::withChecksum('$', buf);
 }
 

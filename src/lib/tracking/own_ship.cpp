@@ -66,6 +66,7 @@ OwnShipConfig OwnShipConfig::fromParams(const ParamMap& p) {
   c.cog_heading_sigma = degToRad(p.getDouble("cog_heading_sigma_deg", radToDeg(c.cog_heading_sigma)));
   c.watch = InputWatchConfig::fromParams(p, c.watch);
   c.navsat = p.getBool("navsat", c.navsat);
+  c.navsat_heading_is_bearing = p.getBool("navsat_heading_is_bearing", c.navsat_heading_is_bearing);
   c.validate();
   return c;
 }

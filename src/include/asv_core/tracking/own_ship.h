@@ -48,8 +48,11 @@ struct OwnShipConfig : IngestionConfig {
   double cog_heading_sigma = degToRad(10.0);  // [rad] course over ground standing in for heading
   InputWatchConfig watch{2.0, 10.0, 0.5};     // watch/*: fix and heading stale after 2 s: alarm
   // The node also reads a receiver's ROS topics (sensor_msgs/NavSatFix on fix, ENU velocity on vel,
-  // ENU orientation on heading), as a GNSS driver such as nmea_navsat_driver publishes them.
+  // orientation on heading), as a GNSS driver such as nmea_navsat_driver publishes them.
   bool navsat = false;
+  // The heading topic's yaw: false, an ENU yaw (REP 103: counter-clockwise from east); true, the compass
+  // bearing itself (clockwise from north), as nmea_navsat_driver writes HDT into its quaternion.
+  bool navsat_heading_is_bearing = false;
 
   void validate() const;
   static OwnShipConfig fromParams(const ParamMap& params);

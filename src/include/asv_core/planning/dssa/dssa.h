@@ -1,6 +1,7 @@
 // DSSA (Kim et al. 2017) and DSSA+ (Hirayama, Miyake, Shiota & Okimoto 2019): distributed stochastic
 // search for multi-ship collision avoidance. Equation, figure and section numbers refer to the DSSA+
-// paper (../shared/seeds/001_f7b806c08d23b381.txt).
+// paper: Hirayama, Miyake, Shiota & Okimoto, "DSSA+: Distributed Collision Avoidance Algorithm in an
+// Environment where Both Course and Speed Changes are Allowed", TransNav 2019.
 //
 // The per-ship logic (DssaAgent) is separate from the message exchange: the ROS layer runs one agent per
 // planner node and exchanges DssaIntention messages over a topic; DssaExchange runs the same agents
