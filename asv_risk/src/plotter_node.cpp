@@ -19,10 +19,7 @@ PlotterNode::PlotterNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
   try {
     config_ = asv::PlotterConfig::fromParams(params);
     output_config_ = asv_ros::NmeaOutputConfig::fromParams(params);
-    if (params.has("origin_lat_deg") != params.has("origin_lon_deg"))
-      throw std::invalid_argument("give both origin_lat_deg and origin_lon_deg (the node's own map origin)");
-    if (params.has("origin_lat_deg"))
-      given = asv::GeoPoint{params.getDouble("origin_lat_deg", 0.0), params.getDouble("origin_lon_deg", 0.0)};
+    given = asv::originFromParams(params);
     asv_ros::rejectUnknown(params, kYaml);
   } catch (const std::invalid_argument&) {
     asv_ros::rejectTypoBehindError(params, kYaml);

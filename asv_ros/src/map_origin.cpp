@@ -6,6 +6,7 @@
 
 #include <ros/callback_queue.h>
 
+#include "asv_ros/node_main.h"
 #include "asv_ros/params.h"
 
 namespace asv_ros {
@@ -98,7 +99,7 @@ void MapOrigin::check(const sensor_msgs::NavSatFix& msg) {
       ros::this_node::getName().c_str(), kMapOriginTopic, describe(p).c_str(), describe(origin_).c_str(),
       from_topic_ ? "the first /map_origin heard" : "its own parameters");
   ros::WallDuration(0.5).sleep();  // rosout publishes from its own thread: let the reason go out first
-  ros::shutdown();
+  shutdownFatal();
 }
 
 }  // namespace asv_ros

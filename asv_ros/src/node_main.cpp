@@ -1,17 +1,28 @@
 #include "asv_ros/node_main.h"
 
+#include <atomic>
 #include <exception>
 
 #include <ros/topic_manager.h>
 
 namespace asv_ros {
 
+namespace {
+std::atomic<bool> fatal{false};
+}  // namespace
+
+void shutdownFatal() {
+  fatal = true;
+  ros::shutdown();
+}
+
 int runNode(int argc, char** argv, const std::string& name,
             const std::function<int(ros::NodeHandle&, ros::NodeHandle&)>& body) {
   ros::init(argc, argv, name);
   ros::NodeHandle nh, pnh("~");
   try {
-    return body(nh, pnh);
+    const int status = body(nh, pnh);
+    return fatal ? 1 : status;
   } catch (const std::exception& e) {
     // /rosout (rqt_console, the launch's log) drops what is logged before the rosout node has
     // connected, and a node failing in its constructor is only a few ms old: wait for the connection

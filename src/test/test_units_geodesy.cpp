@@ -73,3 +73,23 @@ TEST(Geodesy, OriginIsZeroAndBadOriginThrows) {
   EXPECT_FALSE(validLatLon(91.0, 181.0));
   EXPECT_TRUE(validLatLon(-90.0, 180.0));
 }
+
+// A node's own map origin: both keys or neither; half of one, or one off the globe, names the keys.
+TEST(Geodesy, OriginFromParamsIsWholeOrAbsent) {
+  asv::ParamMap p;
+  EXPECT_FALSE(asv::originFromParams(p));
+  p.set("origin_lat_deg", 54.6);
+  EXPECT_THROW(asv::originFromParams(p), std::invalid_argument);
+  p.set("origin_lon_deg", 18.8);
+  const std::optional<asv::GeoPoint> o = asv::originFromParams(p);
+  ASSERT_TRUE(o);
+  EXPECT_DOUBLE_EQ(o->lat_deg, 54.6);
+  EXPECT_DOUBLE_EQ(o->lon_deg, 18.8);
+  p.set("origin_lat_deg", 91.0);  // AIS "not available": no origin
+  try {
+    asv::originFromParams(p);
+    FAIL() << "91 N taken as an origin";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("origin_lat_deg"), std::string::npos);
+  }
+}

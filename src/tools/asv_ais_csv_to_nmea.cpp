@@ -199,7 +199,7 @@ double numberOr(const YAML::Node& o, const char* key, double fallback) {
 bool takePosition(const YAML::Node& o, AisLogReport& r) {
   const bool scaled = !o["scaled"] || o["scaled"].as<bool>();
   const double deg = scaled ? 1.0 : 1.0 / 600000.0, tenth = scaled ? 1.0 : 0.1;
-  r.position = {o["lat"].as<double>() * deg, o["lon"].as<double>() * deg};
+  r.position = {numberOr(o, "lat", std::nan("")) * deg, numberOr(o, "lon", std::nan("")) * deg};
   if (!validLatLon(r.position.lat_deg, r.position.lon_deg))
     return false;
   const double sog = numberOr(o, "speed", scaled ? 102.3 : 1023.0) * tenth;  // "fast" only in scaled output

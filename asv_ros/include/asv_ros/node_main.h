@@ -16,6 +16,10 @@ namespace asv_ros {
 int runNode(int argc, char** argv, const std::string& name,
             const std::function<int(ros::NodeHandle&, ros::NodeHandle&)>& body);
 
+// Ends the node from a callback after a fatal error it has logged (a map origin that disagrees): ros
+// shutdown, and runNode returns 1, so that roslaunch reports the process as died, not finished cleanly.
+void shutdownFatal();
+
 // The body of a node that only spins: constructs Node(nh, pnh), spins until shutdown, returns 0.
 template <class Node>
 int spinNode(int argc, char** argv, const std::string& name) {

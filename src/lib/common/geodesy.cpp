@@ -53,4 +53,15 @@ GeoPoint LocalFrame::toGeodetic(const Eigen::Vector2d& enu) const {
   return {lat, lon};
 }
 
+std::optional<GeoPoint> originFromParams(const ParamMap& p) {
+  if (p.has("origin_lat_deg") != p.has("origin_lon_deg"))
+    throw std::invalid_argument("give both origin_lat_deg and origin_lon_deg (origin of the map frame)");
+  if (!p.has("origin_lat_deg"))
+    return std::nullopt;
+  const GeoPoint o{p.getDouble("origin_lat_deg", 0.0), p.getDouble("origin_lon_deg", 0.0)};
+  if (!validLatLon(o.lat_deg, o.lon_deg))
+    throw std::invalid_argument("origin_lat_deg/origin_lon_deg out of range");
+  return o;
+}
+
 }  // namespace asv

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "asv_core/codec/gnss.h"
+#include "asv_core/common/geodesy.h"
 #include "asv_core/common/units.h"
 
 namespace asv {
@@ -37,11 +38,9 @@ void AutopilotBridgeConfig::validate() const {
 AutopilotBridgeConfig AutopilotBridgeConfig::fromParams(const ParamMap& p) {
   AutopilotBridgeConfig c;
   c.origin_scenario = p.getString("origin_scenario", c.origin_scenario);
-  if (p.has("origin_lat_deg") != p.has("origin_lon_deg"))
-    throw std::invalid_argument("give both origin_lat_deg and origin_lon_deg (origin of the map frame)");
-  if (p.has("origin_lat_deg")) {
-    c.origin_lat_deg = p.getDouble("origin_lat_deg", 0.0);
-    c.origin_lon_deg = p.getDouble("origin_lon_deg", 0.0);
+  if (const std::optional<GeoPoint> o = originFromParams(p)) {
+    c.origin_lat_deg = o->lat_deg;
+    c.origin_lon_deg = o->lon_deg;
   }
   c.talker = p.getString("talker", c.talker);
   c.sentences = p.getStringList("sentences", c.sentences);

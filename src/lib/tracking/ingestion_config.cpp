@@ -4,16 +4,17 @@
 #include <stdexcept>
 
 #include "asv_core/codec/nmea.h"
+#include "asv_core/common/geodesy.h"
 
 namespace asv {
 
 void IngestionConfig::readShared(const ParamMap& p) {
   origin_scenario = p.getString("origin_scenario", origin_scenario);
-  if (p.has("origin_lat_deg") != p.has("origin_lon_deg"))
-    throw std::invalid_argument("give both origin_lat_deg and origin_lon_deg (origin of the map frame)");
-  has_origin = has_origin || p.has("origin_lat_deg");
-  origin_lat_deg = p.getDouble("origin_lat_deg", origin_lat_deg);
-  origin_lon_deg = p.getDouble("origin_lon_deg", origin_lon_deg);
+  if (const std::optional<GeoPoint> o = originFromParams(p)) {
+    has_origin = true;
+    origin_lat_deg = o->lat_deg;
+    origin_lon_deg = o->lon_deg;
+  }
   frame_id = p.getString("frame_id", frame_id);
   publish_rate = p.getDouble("publish_rate", publish_rate);
   silence_warning = p.getDouble("silence_warning", silence_warning);

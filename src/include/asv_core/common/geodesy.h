@@ -3,8 +3,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include <Eigen/Core>
+
+#include "asv_core/common/param_map.h"
 
 namespace GeographicLib {
 class LocalCartesian;
@@ -41,5 +44,10 @@ private:
 
 // True when lat/lon are finite and in range; AIS "not available" (91, 181) is out of range.
 bool validLatLon(double lat_deg, double lon_deg);
+
+// A node's own map origin from its keys origin_lat_deg and origin_lon_deg: both (a valid position) or
+// neither (empty: the node takes the run's /map_origin). Half an origin, or one off the globe, is
+// std::invalid_argument naming the keys.
+std::optional<GeoPoint> originFromParams(const ParamMap& p);
 
 }  // namespace asv
