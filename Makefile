@@ -61,6 +61,7 @@ test: build
 	@scripts/fuzz_smoke.sh || true
 	@scripts/catkin_lint_check.py build/test_results/catkin_lint.xml || true
 	@$(DEVEL) && scripts/readme_check.py build/test_results/readme_check.xml || true
+	@scripts/plot_check.py build/test_results/plot_check.xml || true
 	@JOBS=$(JOBS) scripts/install_check.py build/test_results/install_check.xml || true
 	@if [ "$(ASAN)" = 1 ]; then echo "test: asv_core unit tests under ASan+UBSan (build_asan/, log build/asan.log)..."; \
 	  JOBS=$(JOBS) scripts/asan_tests.sh > build/asan.log 2>&1 || true; fi
