@@ -172,7 +172,21 @@ void OwnShipNode::publish() {
   t.transform.translation.x = o.pose.pose.position.x;
   t.transform.translation.y = o.pose.pose.position.y;
   t.transform.rotation = o.pose.pose.orientation;
-  tf_.sendTransform(t);
+  if (!params_.odom_frame.empty()) {  // REP 105: map -> odom (the fixes' corrections) -> base_link
+    odom_.update(now.toSec(), s->position, asv::courseSpeedToVelocity(s->course, s->speed));
+    geometry_msgs::TransformStamped m;
+    m.header = o.header;
+    m.child_frame_id = params_.odom_frame;
+    m.transform.translation.x = odom_.mapToOdom().x();
+    m.transform.translation.y = odom_.mapToOdom().y();
+    m.transform.rotation.w = 1.0;
+    t.header.frame_id = params_.odom_frame;
+    t.transform.translation.x = odom_.inOdom().x();
+    t.transform.translation.y = odom_.inOdom().y();
+    tf_.sendTransform(std::vector<geometry_msgs::TransformStamped>{m, t});
+  } else {
+    tf_.sendTransform(t);
+  }
   ++published_;
 }
 

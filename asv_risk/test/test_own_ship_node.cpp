@@ -22,6 +22,8 @@
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/NavSatFix.h>
 #include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 
 namespace {
 
@@ -98,8 +100,14 @@ TEST(OwnShipNode, GnssLogToOdometryJumpsRejectedStaleFixAlarmed) {
 // velocity due north at 5 m/s, orientation ENU yaw 80 deg (heading 010). Expected by hand: x 0, y 111.193
 // plus at most 0.3 s x 5 m/s dead-reckoned, position variance 9 (the larger), body twist
 // (5 cos 10, 5 sin 10) = (4.924, 0.868): the ship sails 10 deg to port of her heading.
+// REP 105 (odom_frame navsat_odom): the fix stays put while she reports 5 m/s north, so each fix pulls the
+// map estimate back; odom -> base_link keeps integrating 5 m/s (about 14 m over the 2.8 s after the first
+// fix) and map -> odom carries the difference (y about -14 m); the chain map -> odom -> base_link is
+// the odometry's position at its stamp.
 TEST(OwnShipNode, NavSatFixVelocityAndHeadingTopicsToOdometry) {
   ros::NodeHandle nh;
+  tf2_ros::Buffer tf_buffer;
+  tf2_ros::TransformListener tf_listener(tf_buffer);
   ros::Publisher fix = nh.advertise<sensor_msgs::NavSatFix>("navsat/fix", 10);
   ros::Publisher vel = nh.advertise<geometry_msgs::TwistStamped>("navsat/vel", 10);
   ros::Publisher heading = nh.advertise<geometry_msgs::QuaternionStamped>("navsat/heading", 10);
@@ -143,6 +151,14 @@ TEST(OwnShipNode, NavSatFixVelocityAndHeadingTopicsToOdometry) {
   EXPECT_NEAR(2.0 * std::atan2(odom->pose.pose.orientation.z, odom->pose.pose.orientation.w), 80.0 * M_PI / 180.0,
               1e-6);
   EXPECT_EQ(odom->child_frame_id, "navsat_own/base_link");
+
+  const auto chain = tf_buffer.lookupTransform("map", "navsat_own/base_link", odom->header.stamp, ros::Duration(1.0));
+  EXPECT_NEAR(chain.transform.translation.x, odom->pose.pose.position.x, 1e-6);
+  EXPECT_NEAR(chain.transform.translation.y, odom->pose.pose.position.y, 1e-6);
+  const auto map_odom = tf_buffer.lookupTransform("map", "navsat_odom", odom->header.stamp);
+  EXPECT_NEAR(map_odom.transform.translation.x, 0.0, 0.5);
+  EXPECT_LT(map_odom.transform.translation.y, -8.0) << "the fixes' corrections are in map -> odom";
+  EXPECT_GT(map_odom.transform.translation.y, -16.0);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 
 #include <asv_core/codec/ais.h>
 #include <asv_core/common/geodesy.h>
+#include <asv_core/tracking/odom_frame.h>
 #include <asv_core/tracking/own_ship.h>
 #include <asv_ros/alarm.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -64,6 +65,7 @@ private:
   ros::Publisher odom_pub_;
   ros::Subscriber fix_sub_, vel_sub_, heading_sub_;
   tf2_ros::TransformBroadcaster tf_;
+  asv::OdomFrame odom_;  // REP 105's odom (odom_frame set)
   ros::Timer timer_, diag_timer_;
   diagnostic_updater::Updater updater_;
   asv_ros::AlarmReporter alarm_{nh_};

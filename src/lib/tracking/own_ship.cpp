@@ -40,6 +40,8 @@ void OwnShipConfig::validate() const {
   validateShared();
   if (ship.empty())
     throw std::invalid_argument("ship must not be empty");
+  if (odom_frame == frame_id || odom_frame == ship + "/base_link")
+    throw std::invalid_argument("odom_frame must differ from frame_id and from <ship>/base_link");
   if (own_mmsi > 999999999u)
     throw std::invalid_argument("own_mmsi must have at most 9 digits");
   if (!(ais_timeout > 0.0))
@@ -67,6 +69,7 @@ OwnShipConfig OwnShipConfig::fromParams(const ParamMap& p) {
   c.watch = InputWatchConfig::fromParams(p, c.watch);
   c.navsat = p.getBool("navsat", c.navsat);
   c.navsat_heading_is_bearing = p.getBool("navsat_heading_is_bearing", c.navsat_heading_is_bearing);
+  c.odom_frame = p.getString("odom_frame", c.odom_frame);
   c.validate();
   return c;
 }

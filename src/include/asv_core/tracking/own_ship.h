@@ -53,6 +53,10 @@ struct OwnShipConfig : IngestionConfig {
   // The heading topic's yaw: false, an ENU yaw (REP 103: counter-clockwise from east); true, the compass
   // bearing itself (clockwise from north), as nmea_navsat_driver writes HDT into its quaternion.
   bool navsat_heading_is_bearing = false;
+  // REP 105: "" (default), tf frame_id -> <ship>/base_link; a name (odom), tf frame_id -> odom_frame ->
+  // <ship>/base_link, the odom pose continuous and the fixes' corrections in frame_id -> odom_frame
+  // (odom_frame.h). The odometry topic stays in frame_id either way.
+  std::string odom_frame;
 
   void validate() const;
   static OwnShipConfig fromParams(const ParamMap& params);
