@@ -23,12 +23,21 @@ namespace {
 
 constexpr const char* kYaml = "asv_planning/config/planner_node.yaml";
 
+// The subtrees under ~ that are not the node's keys: every plugin's own ~<planner>/ (a live switch may
+// load any of them) and DssaRosAgent's exchange/.
+std::vector<std::string> otherSubtrees() {
+  std::vector<std::string> skip{"exchange/"};
+  for (const std::string& p : asv::knownPlanners())
+    skip.push_back(p + "/");
+  return skip;
+}
+
 // PlannerNodeConfig::fromParams, naming a typo first when it fails with every key read.
 asv::PlannerNodeConfig plannerConfig(const asv::ParamMap& params) {
   try {
     return asv::PlannerNodeConfig::fromParams(params);
   } catch (const std::invalid_argument&) {
-    asv_ros::rejectTypoBehindError(params, kYaml, {params.getString("planner", "") + "/", "exchange/"});
+    asv_ros::rejectTypoBehindError(params, kYaml, otherSubtrees());
     throw;
   }
 }
@@ -83,17 +92,17 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 // ~<planner>/ over the scenario's planner_params (the plugin checks its keys); ~exchange/ is
 // DssaRosAgent's.
 PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::ParamMap& params)
-    : nh_(nh), pnh_(pnh), params_(plannerConfig(params)) {
+    : nh_(nh), pnh_(pnh), params_(plannerConfig(params)), node_params_(params) {
   asv::PlannerNodeConfig& p = params_;
-  asv::ParamMap plugin_params = applyScenario();
-  asv_ros::rejectUnknown(params, kYaml, {p.planner + "/", "exchange/"});
+  applyScenario();
+  asv_ros::rejectUnknown(params, kYaml, otherSubtrees());
   if (p.planner.empty() || p.planner == "none") {
     ROS_INFO("planner_node: no planner for ship '%s': it steers straight for its goal", p.ship.c_str());
     lockstep_.start();  // nothing to do at any step, but the simulation waits for every participant
     return;
   }
-  plugin_params.merge(params.sub(p.planner));
-  plugin_ = loader_.load(p.planner, plugin_params);
+  mode_ = pluginParams(p.planner).getString("mode", mode_);
+  plugin_ = loader_.load(p.planner, pluginParams(p.planner));
   if (DssaRosAgent::wanted(p.planner, p.distributed)) {  // distributed DSSA: the agent drives cmd
     const asv::PlanFollowerConfig& f = p.follower;
     dssa_ = std::make_unique<DssaRosAgent>(
@@ -120,12 +129,14 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
 // The scenario's part, when one is given: the obstacles, this ship's goal, cruise speed and minimum
 // separation where the parameters leave them open, the planner when none is given (the scenario's
 // choice for this ship), and the scenario's parameters of that planner.
-asv::ParamMap PlannerNode::applyScenario() {
+void PlannerNode::applyScenario() {
   asv::PlannerNodeConfig& p = params_;
   if (p.scenario.empty())
-    return {};
+    return;
   const asv::Scenario sc = asv::loadScenario(p.scenario, p.charts);
   obstacles_ = sc.obstacles;
+  scenario_planners_ = sc.planner_params;
+  scenario_min_separation_ = sc.min_separation;
   const asv::ScenarioShip* ship = sc.own.name == p.ship ? &sc.own : nullptr;
   for (const auto& t : sc.targets)
     if (t.name == p.ship)
@@ -142,9 +153,19 @@ asv::ParamMap PlannerNode::applyScenario() {
     p.follower.min_separation = sc.min_separation;  // the scenario's safety.min_separation_m
   if (sc.min_obstacle_clearance > 0.0)
     p.follower.min_obstacle_clearance_m = sc.min_obstacle_clearance;  // the waters' own (a port)
+  scenario_planner_ = ship->planner;
   if (p.planner.empty())
     p.planner = ship->planner;
-  return sc.planner_params.sub(p.planner);
+}
+
+// A plugin's parameters: the node's ~<planner>/ over the scenario's planner_params (the plugin checks
+// its keys).
+asv::ParamMap PlannerNode::pluginParams(const std::string& planner) const {
+  asv::ParamMap m = scenario_planners_.sub(planner);
+  m.merge(node_params_.sub(planner));
+  if (!params_.mode.empty())
+    m.set("mode", params_.mode);  // the node's ~mode over the plugin's own
+  return m;
 }
 
 // The inputs are read at the set-point job (lockstep: the step's odometry, risk and tracks first).
@@ -164,12 +185,15 @@ void PlannerNode::start() {
   path_pub_ = nh_.advertise<nav_msgs::Path>("path", 5, true);
   cmd_pub_ = nh_.advertise<asv_msgs::CourseSpeedSetpoint>("cmd", 5);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("plan_markers", 2, true);
+  domains_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("domains", 2);
   lockstep_.every(1.0 / params_.setpoint_rate, [this] { timerCallback(); });
   if (!lockstep_.enabled())  // a lost input is acted on between set-points too
     lockstep_.every(asv_ros::kWatchPeriod, [this] { watchJob(); });
   lockstep_.start();
   updater_.setHardwareID(params_.ship);
   updater_.add("planner", this, &PlannerNode::diagnose);
+  live_ = std::make_unique<dynamic_reconfigure::Server<PlannerConfig>>(pnh_);
+  live_->setCallback([this](PlannerConfig& c, uint32_t level) { reconfigure(c, level); });
   ROS_INFO("planner_node: ship '%s', planner '%s', goal %s, budget %.2f s", params_.ship.c_str(),
            params_.planner.c_str(), params_.has_goal ? "set" : "none", follower_config_.time_budget);
 }
@@ -377,8 +401,8 @@ void PlannerNode::publishPlan() {
   line.ns = params_.ship + "/plan";
   line.type = visualization_msgs::Marker::LINE_STRIP;
   line.pose.orientation.w = 1.0;
-  line.scale.x = 40.0;  // [m] plan line: 2-3 px in rviz/asv.rviz
-  line.color.a = 1.0;
+  line.scale.x = asv_ros::pixelsToMetres(2.5);
+  line.color.a = 0.6;  // the ship's own track (sim/markers) shows through where she followed it
   line.color.g = plan.status == asv::PlanStatus::Ok ? 1.0f : 0.3f;
   line.color.r = plan.status == asv::PlanStatus::Ok ? 0.2f : 1.0f;
   for (const auto& w : plan.waypoints) {
@@ -407,6 +431,107 @@ void PlannerNode::publishPlan() {
   if (line.points.size() >= 2)
     markers.markers.push_back(line);
   markers_pub_.publish(markers);
+}
+
+// The domain the plugin plans with round each target of the problem now (a compliant give-way target
+// the own ship stands on for is not in it), as closed outlines.
+void PlannerNode::publishDomains(const std::vector<asv::PlannerTarget>& targets) {
+  visualization_msgs::MarkerArray arr;
+  visualization_msgs::Marker clear;
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  arr.markers.push_back(clear);
+  const ros::Time now = ros::Time::now();
+  int id = 0;
+  for (const asv::TargetDomain& d : plugin_->domains(follower_->buildProblem(now.toSec(), targets))) {
+    if (d.polygon.size() < 3)
+      continue;
+    visualization_msgs::Marker m;
+    m.header.stamp = now;
+    m.header.frame_id = params_.frame_id;
+    m.ns = params_.ship + "/domains";
+    m.id = id++;
+    m.type = visualization_msgs::Marker::LINE_STRIP;
+    m.pose.orientation.w = 1.0;
+    m.scale.x = asv_ros::pixelsToMetres(1.5);
+    m.color.r = 0.3f;
+    m.color.g = 0.8f;
+    m.color.b = 1.0f;
+    m.color.a = 0.8f;
+    for (size_t k = 0; k <= d.polygon.size(); ++k) {
+      geometry_msgs::Point p;
+      p.x = d.polygon[k % d.polygon.size()].x();
+      p.y = d.polygon[k % d.polygon.size()].y();
+      m.points.push_back(p);
+    }
+    arr.markers.push_back(m);
+  }
+  domains_pub_.publish(arr);
+}
+
+PlannerConfig PlannerNode::liveConfig() const {
+  PlannerConfig c;
+  c.planner = params_.planner;
+  c.mode = mode_;
+  c.min_separation = params_.follower.min_separation;
+  c.replan_period = params_.follower.replan_period;
+  c.min_replan_interval = params_.follower.min_replan_interval;
+  c.time_budget = params_.follower.time_budget;
+  c.stand_on_policy = params_.follower.stand_on_policy;
+  return c;
+}
+
+void PlannerNode::reconfigure(PlannerConfig& c, uint32_t /*level*/) {
+  if (!live_started_) {  // setCallback's first call: the values in force (the scenario's where resolved)
+    live_started_ = true;
+    c = liveConfig();
+    return;
+  }
+  asv::PlannerNodeConfig next = params_;
+  next.follower.min_separation = c.min_separation > 0.0 ? c.min_separation : scenario_min_separation_;
+  next.follower.replan_period = c.replan_period;
+  next.follower.min_replan_interval = c.min_replan_interval;
+  next.follower.time_budget = c.time_budget;
+  next.follower.stand_on_policy = c.stand_on_policy;
+  next.planner = c.planner.empty() ? scenario_planner_ : c.planner;
+  next.mode = c.mode;
+  asv::PlanFollowerConfig fc = followerConfig(next, lockstep_.enabled());
+  fc.cruise_speed = follower_->cruiseSpeed();
+  pluginlib::UniquePtr<PlannerPlugin> plugin;
+  try {
+    fc.validate();  // nothing changes unless the whole set is valid and the plugin loads
+    if (next.planner != params_.planner || next.mode != mode_)
+      plugin = loadPlugin(next.planner, next.mode);
+  } catch (const std::exception& e) {
+    ROS_ERROR("planner_node: live parameters refused (%s); the values in force are kept", e.what());
+    c = liveConfig();
+    return;
+  }
+  follower_->reconfigure(fc);  // validated above: cannot throw
+  if (plugin) {
+    ROS_INFO("planner_node: planner '%s' (%s) replaces '%s' (%s)", next.planner.c_str(), next.mode.c_str(),
+             params_.planner.c_str(), mode_.c_str());
+    plugin_ = std::move(plugin);
+    mode_ = next.mode;
+  }
+  params_ = next;
+  follower_config_ = follower_->config();
+  c = liveConfig();
+  ROS_INFO("planner_node: live parameters: planner %s (%s), min separation %.0f m, replan period %.0f s, "
+           "min replan interval %.1f s, time budget %.2f s, stand-on policy %s",
+           params_.planner.c_str(), mode_.c_str(), params_.follower.min_separation, params_.follower.replan_period,
+           params_.follower.min_replan_interval, params_.follower.time_budget,
+           params_.follower.stand_on_policy ? "on" : "off");
+}
+
+// `planner` in `mode`, its parameters read from ~ again (the user may have set ~<planner>/ since the
+// start); throws when it cannot load.
+pluginlib::UniquePtr<PlannerPlugin> PlannerNode::loadPlugin(const std::string& planner, const std::string& mode) {
+  if (planner.empty() || planner == "none")
+    throw std::invalid_argument("planner '" + planner + "': a running planner_node needs a planner");
+  node_params_ = asv_ros::readParams(pnh_);
+  asv::ParamMap params = pluginParams(planner);
+  params.set("mode", mode);
+  return loader_.load(planner, params);
 }
 
 void PlannerNode::publishSetpoint() {
@@ -439,6 +564,7 @@ void PlannerNode::timerCallback() {
     const std::vector<asv::PlannerTarget> targets = targetsNow();
     if (follower_->replanNeeded(ros::Time::now().toSec(), targets, why))
       replan(why, targets);
+    publishDomains(targets);
   }
   publishSetpoint();
   updater_.update();
@@ -492,6 +618,8 @@ void PlannerNode::degrade(const std::vector<asv::StaleInput>& lost) {
 
 void PlannerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("planner", params_.planner);
+  stat.add("mode", mode_);
+  stat.add("min separation [m]", follower_->config().min_separation);
   stat.add("replans", follower_->replans());
   stat.add("fallbacks", follower_->fallbacks());
   stat.add("budget overruns", overruns_);

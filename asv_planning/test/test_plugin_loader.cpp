@@ -106,3 +106,21 @@ TEST(PluginLoader, ParametersInForceAreTheDefaultsWithTheGivenKeysOver) {
   EXPECT_EQ(c.alpha, c.beta);    // the plugin's dssa_plus is the s=c variant, alpha = beta
   EXPECT_TRUE(loader.load("aco", asv::ParamMap())->parameters().values().empty());  // no defaults of its own
 }
+
+// planner_node shows each plugin's domains: through the plugin, ACO gives its hexagon (6 vertices,
+// test_planner_domains.cpp) and the others the separation circle (36).
+TEST(PluginLoader, DomainsComeFromTheAlgorithm) {
+  PluginLoader loader;
+  asv::PlanningProblem pr;
+  pr.min_separation = 926.0;
+  asv::PlannerTarget t;
+  t.state.id = "T1";
+  t.state.position = {0.0, 10000.0};
+  pr.targets.push_back(t);
+  for (const std::string& n : {std::string("aco"), std::string("ga")}) {
+    const auto d = loader.load(n, asv::ParamMap())->domains(pr);
+    ASSERT_EQ(d.size(), 1u) << n;
+    EXPECT_EQ(d[0].target_id, "T1");
+    EXPECT_EQ(d[0].polygon.size(), n == "aco" ? 6u : 36u) << n;
+  }
+}

@@ -222,7 +222,7 @@ visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssess
       m.ns = "cpa_line";
       m.id = id++;
       m.type = visualization_msgs::Marker::LINE_LIST;
-      m.scale.x = 30.0;  // [m] 2 px at rviz/asv.rviz's 0.06 px/m
+      m.scale.x = asv_ros::pixelsToMetres(2.0);
       m.points = {t.own_cpa_position, t.target_cpa_position};
       arr.markers.push_back(m);
       m.points.clear();
@@ -230,7 +230,7 @@ visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssess
       m.id = id++;
       m.type = visualization_msgs::Marker::SPHERE;
       m.pose.position = t.target_cpa_position;
-      m.scale.x = m.scale.y = m.scale.z = 150.0;
+      m.scale.x = m.scale.y = m.scale.z = asv_ros::pixelsToMetres(9.0);
       arr.markers.push_back(m);
     }
     m.ns = "label";
@@ -238,8 +238,8 @@ visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssess
     m.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
     m.pose.position.x = ra.own_position.x + t.range * std::sin(t.bearing);
     m.pose.position.y =
-        ra.own_position.y + t.range * std::cos(t.bearing) - 700.0;  // below the ship, clear of its name
-    m.scale.z = 200.0;                                              // [m] 12 px lines in rviz/asv.rviz
+        ra.own_position.y + t.range * std::cos(t.bearing) - asv_ros::pixelsToMetres(42.0);  // below the ship
+    m.scale.z = asv_ros::pixelsToMetres(12.0);
     static const char* roles[] = {"-", "give-way", "stand-on", "both give-way"};
     std::ostringstream s;
     s.precision(2);
@@ -249,7 +249,42 @@ visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssess
     m.text = s.str();
     arr.markers.push_back(m);
   }
+  arr.markers.push_back(ownRiskLabel(ra, id));
   return arr;
+}
+
+// The own ship's risk state above her: the most dangerous target's risk, or no data (never "no risk"
+// when the picture is not there).
+visualization_msgs::Marker RiskNode::ownRiskLabel(const asv_msgs::RiskAssessment& ra, int id) const {
+  const asv_msgs::TargetRisk* worst = nullptr;
+  for (const asv_msgs::TargetRisk& t : ra.targets)
+    if (!worst || t.risk_level > worst->risk_level || (t.risk_level == worst->risk_level && t.cri > worst->cri))
+      worst = &t;
+  visualization_msgs::Marker m;
+  m.header = ra.header;
+  m.ns = "own_risk";
+  m.id = id;
+  m.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+  m.pose.orientation.w = 1.0;
+  m.pose.position = ra.own_position;
+  m.pose.position.y += asv_ros::pixelsToMetres(54.0);  // above her name
+  m.scale.z = asv_ros::pixelsToMetres(15.0);
+  const uint8_t level = ra.data_ok ? (worst ? worst->risk_level : 0) : 3;
+  m.color.a = 1.0;
+  m.color.r = riskColour(level, 0);
+  m.color.g = riskColour(level, 1);
+  m.color.b = riskColour(level, 2);
+  std::ostringstream s;
+  s.precision(2);
+  if (!ra.data_ok)
+    s << "RISK UNKNOWN: " << ra.data_fault;
+  else if (!worst)
+    s << "risk: none (no targets)";
+  else
+    s << std::fixed << "risk: " << asv::toString(static_cast<asv::RiskLevel>(worst->risk_level)) << ", "
+      << worst->target_id << " CRI " << worst->cri << " TCPA " << worst->tcpa / 60.0 << " min";
+  m.text = s.str();
+  return m;
 }
 
 void RiskNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {

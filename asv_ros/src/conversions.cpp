@@ -1,5 +1,7 @@
 #include "asv_ros/conversions.h"
 
+#include <cmath>
+
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
@@ -20,6 +22,14 @@ bool resetOnClockJump(asv::ClockJumpDetector& clock, diagnostic_updater::Updater
            ros::this_node::getName().c_str(), clock.lastJump(), forgotten.c_str());
   updater.force_update();
   return true;
+}
+
+double pixelsToMetres(double px) {
+  constexpr double kDefaultScale = 0.06;  // [px/m] asv.rviz's
+  double scale = kDefaultScale;
+  if (!ros::param::getCached("/view_scale", scale) || !(scale > 0.0) || !std::isfinite(scale))
+    scale = kDefaultScale;
+  return px / scale;
 }
 
 }  // namespace asv_ros

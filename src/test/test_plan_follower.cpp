@@ -100,6 +100,37 @@ TEST(PlanFollower, RiskMustStayClearBeforeARiseReplansAgain) {
   EXPECT_TRUE(f.replanNeeded(350.0, ahead(asv::RiskLevel::Urgent), why));
 }
 
+// Live parameters (planner_node's dynamic_reconfigure): a new minimum separation reaches the next
+// problem, replans at once although min_replan_interval has not passed, keeps the cruise speed fixed at
+// the first update (6 m/s, the own ship's) when given 0, and a bad value changes nothing.
+TEST(PlanFollower, ReconfigureReplansAtOnceUnderTheNewValues) {
+  asv::PlanFollower f = follower();
+  std::string why;
+  ASSERT_TRUE(f.replanNeeded(0.0, {}, why));
+  asv::Plan p;
+  p.status = asv::PlanStatus::Ok;
+  p.waypoints = {{{0.0, 0.0}, 0.0, 0.0, 6.0}, {{0.0, 20000.0}, 3333.0, 0.0, 6.0}};
+  f.acceptPlan(p, 0.0, {}, "test");
+  EXPECT_FALSE(f.replanNeeded(1.0, {}, why));  // within min_replan_interval (2 s), nothing new
+
+  asv::PlanFollowerConfig c = f.config();
+  c.cruise_speed = 0.0;
+  c.min_separation = 1852.0;
+  f.reconfigure(c);
+  EXPECT_DOUBLE_EQ(f.cruiseSpeed(), 6.0);
+  EXPECT_DOUBLE_EQ(f.buildProblem(1.0, {}).min_separation, 1852.0);
+  ASSERT_TRUE(f.replanNeeded(1.0, {}, why));
+  EXPECT_EQ(why, "parameters changed");
+  EXPECT_TRUE(f.havePlan());  // the plan in force is flown meanwhile
+  f.acceptPlan(p, 1.0, {}, "test");
+  EXPECT_FALSE(f.replanNeeded(1.5, {}, why));  // once
+
+  c.replan_period = -1.0;
+  EXPECT_THROW(f.reconfigure(c), std::invalid_argument);
+  EXPECT_DOUBLE_EQ(f.config().replan_period, 30.0);
+  EXPECT_FALSE(f.replanNeeded(1.5, {}, why));
+}
+
 // Head-on: a target dead ahead on the reciprocal course, slightly to starboard of the own track, so
 // that the paper's search (shortest deviation) turns to port; with `colregs` DSSA turns to starboard.
 TEST(DssaColregs, GiveWayInHeadOnSearchesStarboardOnly) {

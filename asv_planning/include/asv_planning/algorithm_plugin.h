@@ -14,6 +14,9 @@ public:
   asv::Plan makePlan(const asv::PlanningProblem& problem) override;
   std::string name() const override { return name_; }
   asv::ParamMap parameters() const override { return parameters_; }
+  std::vector<asv::TargetDomain> domains(const asv::PlanningProblem& problem) const override {
+    return algorithm_->domains(problem);
+  }
 
 protected:
   // `defaults`: the plugin's sea-scale defaults where the algorithm's own follow its paper's units;

@@ -5,9 +5,12 @@
 //   alarms (asv_msgs/Alarm: the upstream nodes' alarms), aids_to_navigation
 //   (asv_msgs/AidToNavigationArray from ais_node, when use_aids: hazards the plans keep clear of)
 // Publishes: plan (asv_msgs/Plan), path (nav_msgs/Path), cmd (asv_msgs/CourseSpeedSetpoint),
-//   plan_markers (visualization_msgs/MarkerArray), alarms (asv_msgs/Alarm, latched: its inputs lost and
+//   plan_markers (visualization_msgs/MarkerArray), domains (MarkerArray: the planner's domain round each
+//   target of its problem), alarms (asv_msgs/Alarm, latched: its inputs lost and
 //   the degraded action), /diagnostics
 // Parameters: config/planner_node.yaml; the plugin's own under ~<planner>/ (config/<planner>.yaml).
+//   Live (dynamic_reconfigure, cfg/Planner.cfg): planner, mode, min_separation, replan_period,
+//   min_replan_interval, time_budget, stand_on_policy.
 #pragma once
 
 #include <map>
@@ -27,10 +30,12 @@
 #include <asv_ros/frames.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 
+#include "asv_planning/PlannerConfig.h"
 #include "asv_planning/dssa_ros_agent.h"
 #include "asv_planning/plugin_loader.h"
 
@@ -50,7 +55,8 @@ private:
   void aidsCallback(const asv_msgs::AidToNavigationArray::ConstPtr& msg);
   // The scenario's obstacles and the aids' hazards, as the plan follower gets them.
   std::vector<asv::StaticObstacle> allObstacles() const;
-  asv::ParamMap applyScenario();
+  void applyScenario();
+  asv::ParamMap pluginParams(const std::string& planner) const;
   void start();
   void timerCallback();
   void watchJob();  // free-running, every kWatchPeriod: degraded operation as soon as an input is lost
@@ -66,7 +72,13 @@ private:
   void replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets);
   void publishPlan();
   void publishSetpoint();
+  void publishDomains(const std::vector<asv::PlannerTarget>& targets);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
+  // dynamic_reconfigure: applies a change of the live parameters as a whole, or refuses it (ERROR on
+  // screen, the values in force shown again); the first call shows the values in force.
+  void reconfigure(PlannerConfig& config, uint32_t level);
+  PlannerConfig liveConfig() const;
+  pluginlib::UniquePtr<PlannerPlugin> loadPlugin(const std::string& planner, const std::string& mode);
   // Drops the own ship, the inputs and the plan when the clock has gone backwards (a looping bag).
   void checkClock();
 
@@ -77,7 +89,7 @@ private:
   std::vector<asv::StaticObstacle> obstacles_;      // the scenario's (land, structures)
   std::vector<asv::StaticObstacle> aid_obstacles_;  // one per aid to navigation
   ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_, aids_sub_;
-  ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_;
+  ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_, domains_pub_;
   asv_ros::FrameLookup frames_{params_.frame_id};  // odometry and goals in any frame tf2 connects to map
   diagnostic_updater::Updater updater_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kPlanning};
@@ -100,6 +112,13 @@ private:
   std::string last_reason_;
   std::unique_ptr<DssaRosAgent>
       dssa_;  // distributed DSSA/DSSA+ (~distributed): drives cmd instead of the plugin
+  asv::ParamMap node_params_;           // ~ (a planner switch reads the new plugin's ~<planner>/)
+  asv::ParamMap scenario_planners_;     // the scenario's planner_params, all planners
+  std::string scenario_planner_;        // the scenario's planner for this ship ("" without scenario)
+  std::string mode_ = "sea";            // the plugin's mode in force (its key mode)
+  double scenario_min_separation_ = 0;  // [m] the scenario's (0: none)
+  std::unique_ptr<dynamic_reconfigure::Server<PlannerConfig>> live_;
+  bool live_started_ = false;
 };
 
 }  // namespace asv_planning

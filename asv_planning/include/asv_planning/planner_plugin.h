@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <asv_core/common/param_map.h>
 #include <asv_core/planning/planning.h>
@@ -23,6 +24,11 @@ public:
   // The parameters in force since initialize(): the plugin's defaults with the given keys over them.
   // What a caller needs to build the same algorithm elsewhere (the distributed DSSA agent does).
   virtual asv::ParamMap parameters() const = 0;
+  // The area round each of the problem's targets that this planner keeps the own ship out of (shown in
+  // rviz). Not pure: a plugin without a domain of its own shows the separation rule every plan keeps.
+  virtual std::vector<asv::TargetDomain> domains(const asv::PlanningProblem& problem) const {
+    return asv::separationDomains(problem);
+  }
 
 protected:
   PlannerPlugin() = default;

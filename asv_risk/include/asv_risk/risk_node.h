@@ -48,6 +48,7 @@ private:
   // Forgets the own ship and every compliance history when the clock has gone backwards (a looping bag).
   void checkClock();
   visualization_msgs::MarkerArray makeMarkers(const asv_msgs::RiskAssessment& ra) const;
+  visualization_msgs::Marker ownRiskLabel(const asv_msgs::RiskAssessment& ra, int id) const;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
   // The inputs' watch (every kWatchPeriod): the alarm, and while an input is stale the last assessment again
   // with data_ok false.

@@ -14,6 +14,11 @@ namespace asv_ros {
 // The orientation of an ENU yaw [rad] (REP 103: counter-clockwise from east, about z up).
 geometry_msgs::Quaternion yawToQuaternion(double yaw);
 
+// rviz marker sizes: `px` screen pixels as metres in the map, at the global parameter /view_scale
+// [px/m] (default 0.06, asv_bringup/rviz/asv.rviz's top-down scale; rviz/record.sh sets the scale of
+// its fitted view), so that ships and labels stay readable at any zoom the run is shown at.
+double pixelsToMetres(double px);
+
 // When ROS time has gone back (a looping bag, a restarted simulator; asv::ClockJumpDetector), a node
 // forgets its time-dependent state rather than computing ages and rates across the jump: `reset`
 // forgets it and says what it forgot ("12 tracks dropped"), which is logged as a warning; the

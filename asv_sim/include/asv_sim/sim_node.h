@@ -17,6 +17,7 @@
 
 #include <asv_core/planning/plan_follower.h>
 #include <asv_core/sim/lockstep.h>
+#include <asv_core/sim/run_summary.h>
 #include <asv_core/sim/sim_node_config.h>
 #include <asv_core/sim/simulation.h>
 #include <asv_ros/alarm.h>
@@ -75,6 +76,10 @@ private:
   void lockstepAckCallback(const asv_msgs::LockstepAck::ConstPtr& msg);
   bool waitFor(const std::function<bool()>& done, const char* what);
   void publishState(bool odom, bool ships);
+  void addTrail(size_t i, const visualization_msgs::Marker& ship, visualization_msgs::MarkerArray& arr);
+  // sim/summary: each target's closest approach to the own ship so far, the own ship's manoeuvres, and
+  // the simulated time and rate at the scene box's top-left corner (the recording's last frame).
+  void publishSummary();
   void publishNmea(const std::vector<std::string>& lines, const ros::Time& stamp, const char* frame);
   void publishEvents(size_t from);
   void cmdCallback(const std::string& ship, const std::string& topic,
@@ -86,7 +91,9 @@ private:
   std::unique_ptr<asv::Simulation> sim_;
   std::unique_ptr<asv_ros::MapOrigin> map_origin_;
   std::unique_ptr<asv::NmeaEmitter> emitter_;
-  ros::Publisher clock_pub_, nmea_pub_, ships_pub_, events_pub_, markers_pub_, land_pub_;
+  ros::Publisher clock_pub_, nmea_pub_, ships_pub_, events_pub_, markers_pub_, land_pub_, summary_pub_;
+  asv::RunSummary summary_;
+  asv::SceneBox scene_box_;  // sim/scene_box [xmin, ymin, xmax, ymax]: where the encounter takes place
   std::vector<ros::Publisher> odom_pubs_;
   std::vector<ros::Subscriber> cmd_subs_;
   asv::InputWatch cmd_watch_;  // each ship's cmd topic (free-running)

@@ -322,6 +322,10 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
     recovered_ = false;
     return why = "picture back after degraded operation", true;
   }
+  if (reconfigured_) {
+    reconfigured_ = false;
+    return why = "parameters changed", true;
+  }
   const double since = now - last_plan_time_;
   if (since < cfg_.min_replan_interval)
     return false;
@@ -404,6 +408,14 @@ const Plan& PlanFollower::degrade(double now, const std::vector<PlannerTarget>& 
   if (holding && f.course_setpoint == plan_.course_setpoint && f.speed_setpoint == plan_.speed_setpoint)
     return plan_;  // the same action: the plan in force (and its first message) stays
   return acceptPlan(std::move(f), now, {}, "degraded");
+}
+
+void PlanFollower::reconfigure(PlanFollowerConfig config) {
+  if (config.cruise_speed <= 0.0)
+    config.cruise_speed = cfg_.cruise_speed;
+  config.validate();
+  cfg_ = config;
+  reconfigured_ = true;
 }
 
 void PlanFollower::recover() {

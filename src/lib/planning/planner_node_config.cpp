@@ -25,6 +25,7 @@ void PlannerNodeConfig::validate() const {
 PlannerNodeConfig PlannerNodeConfig::fromParams(const ParamMap& p) {
   PlannerNodeConfig c;
   c.planner = p.getString("planner", c.planner);
+  c.mode = p.getString("mode", c.mode);
   c.ship = p.getString("ship", c.ship);
   c.frame_id = p.getString("frame_id", c.frame_id);
   c.scenario = p.getString("scenario", c.scenario);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "asv_core/common/units.h"
+
 namespace asv {
 
 const char* toString(PlanStatus s) {
@@ -91,6 +93,33 @@ double polygonObstacleDistance(const Polygon& outline, const StaticObstacle& o, 
   for (size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++)
     d = std::min(d, o.index->distance(outline[j], outline[i]));
   return d;
+}
+
+std::vector<TargetDomain> separationDomains(const PlanningProblem& problem) {
+  std::vector<TargetDomain> out;
+  if (!(problem.min_separation > 0.0))
+    return out;
+  const double r = kSeparationMargin * problem.min_separation;
+  for (const PlannerTarget& t : problem.targets) {
+    TargetDomain d{t.state.id, {}};
+    for (int k = 0; k < 36; ++k) {
+      const double a = k * kPi / 18.0;
+      d.polygon.push_back(t.state.position + r * Eigen::Vector2d(std::sin(a), std::cos(a)));
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+PlannerMode plannerMode(const ParamMap& params, const std::string& algorithm, bool has_paper) {
+  const std::string mode = params.getString("mode", "sea");
+  if (mode == "sea")
+    return PlannerMode::Sea;
+  if (mode != "paper")
+    throw std::invalid_argument(algorithm + ": mode must be sea or paper, not '" + mode + "'");
+  if (!has_paper)
+    throw std::invalid_argument(algorithm + ": mode paper is not available yet (only sea)");
+  return PlannerMode::Paper;
 }
 
 }  // namespace asv

@@ -129,6 +129,11 @@ public:
   const Plan& degrade(double now, const std::vector<PlannerTarget>& last_known, const std::string& cause);
   // The data is back: the next replanNeeded() asks for a plan at once ("picture back").
   void recover();
+  // New settings while running (the node's live parameters). Validated first: on a bad value it throws
+  // and nothing changes. A cruise speed of 0 keeps the one in force. The plan in force is flown until
+  // the next replanNeeded(), which asks for a plan under the new settings at once ("parameters
+  // changed"): a larger min_separation must not wait for the next risk change.
+  void reconfigure(PlanFollowerConfig config);
   bool degraded() const { return degraded_since_ >= 0.0; }
 
   // Course and speed to steer now; false while there is no plan (or no own state).
@@ -162,6 +167,7 @@ private:
   double degraded_since_ = -1.0;  // when degraded operation began (< 0: not degraded)
   double degraded_course_ = 0.0;  // the course held in degraded operation
   bool recovered_ = false;        // the picture came back: replan at once
+  bool reconfigured_ = false;     // the settings changed: replan at once
   uint64_t replans_ = 0, fallbacks_ = 0;
 };
 

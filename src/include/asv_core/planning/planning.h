@@ -126,6 +126,23 @@ struct Plan {
   std::string message;                     // why, for humans
 };
 
+// A planner's mode, key `mode`: `sea` (default), the published method with the stack's named extensions
+// for use at sea; `paper`, the method as published, those extensions off (each algorithm's config lists
+// them). Throws std::invalid_argument on another value, or on `paper` when `has_paper` is false (an
+// algorithm whose paper mode is not built yet says so rather than run something else).
+enum class PlannerMode { Sea, Paper };
+PlannerMode plannerMode(const ParamMap& params, const std::string& algorithm, bool has_paper = true);
+
+// The area round a target that a planner keeps the own ship out of, at the problem's time (for display).
+struct TargetDomain {
+  std::string target_id;
+  Polygon polygon;  // [m] ENU
+};
+
+// The separation rule every plan keeps (planUnderSharedRules): a circle of kSeparationMargin x
+// min_separation round each of the problem's targets, as a 36-gon; none when min_separation is 0.
+std::vector<TargetDomain> separationDomains(const PlanningProblem& problem);
+
 // The core algorithm interface every planner implements (ACO, DSSA, DSSA+, MOPSO, GA).
 class PlannerAlgorithm {
 public:
@@ -135,6 +152,11 @@ public:
   virtual void configure(const ParamMap& params) = 0;
   virtual Plan plan(const PlanningProblem& problem) = 0;
   virtual std::string name() const = 0;
+  // The domains this algorithm plans with round the problem's targets; by default the separation rule
+  // every plan keeps. An algorithm with a domain of its own (ACO's hexagon) gives that.
+  virtual std::vector<TargetDomain> domains(const PlanningProblem& problem) const {
+    return separationDomains(problem);
+  }
 };
 
 // Wall-clock budget helper for anytime algorithms.

@@ -66,8 +66,17 @@ void AcoConfig::validate() const {
   domain.validate();
 }
 
-AcoConfig AcoConfig::fromParams(const ParamMap& params) {
+AcoConfig AcoConfig::paper() {
   AcoConfig c;
+  c.min_first_alteration = 0.0;
+  c.smooth = false;
+  c.colregs_factor = 1.0;
+  c.inflate = false;
+  return c;
+}
+
+AcoConfig AcoConfig::fromParams(const ParamMap& params) {
+  AcoConfig c = plannerMode(params, "aco") == PlannerMode::Paper ? paper() : AcoConfig{};
   c.tau0 = params.getDouble("tau0", c.tau0);
   c.rho = params.getDouble("rho", c.rho);
   c.alpha = params.getDouble("alpha", c.alpha);
@@ -90,6 +99,7 @@ AcoConfig AcoConfig::fromParams(const ParamMap& params) {
   c.domain.d = params.getDouble("domain_d_m", c.domain.d);
   c.domain.e = params.getDouble("domain_e_m", c.domain.e);
   c.colregs_factor = params.getDouble("colregs_factor", c.colregs_factor);
+  c.inflate = params.getBool("inflate", c.inflate);
   params.rejectUnknown("aco");
   c.validate();
   return c;
@@ -126,6 +136,17 @@ void setDomain(const HexagonDomainConfig& domain, Target& mt) {
 
 }  // namespace
 
+HexagonDomainConfig targetDomain(const PlannerTarget& t, const HexagonDomainConfig& domain, double colregs_factor) {
+  // By the encounter alone, not the risk level: a plan made before the risk is established (a
+  // predicted close pass) must already leave the target on the side the rules will want.
+  if (colregs_factor == 1.0 || (t.encounter != Encounter::HeadOn && t.encounter != Encounter::CrossingGiveWay))
+    return domain;
+  HexagonDomainConfig give_way = domain;
+  give_way.a *= colregs_factor;
+  give_way.c *= colregs_factor;
+  return give_way;
+}
+
 AcoEnvironment::AcoEnvironment(const PlanningProblem& problem, const HexagonDomainConfig& domain,
                                double colregs_factor)
     : has_bounds_(problem.has_bounds), bounds_min_(problem.bounds_min), bounds_max_(problem.bounds_max) {
@@ -141,9 +162,6 @@ AcoEnvironment::AcoEnvironment(const PlanningProblem& problem, const HexagonDoma
     }
     obstacles_.push_back(std::move(ob));
   }
-  HexagonDomainConfig give_way = domain;  // AcoConfig::colregs_factor
-  give_way.a *= colregs_factor;
-  give_way.c *= colregs_factor;
   for (const auto& t : problem.targets) {
     MovingTarget mt;
     mt.p0 = t.state.position;
@@ -151,11 +169,7 @@ AcoEnvironment::AcoEnvironment(const PlanningProblem& problem, const HexagonDoma
     // The domain turns with the target's course (it keeps it, section 2.2).
     mt.sin_c = std::sin(t.state.course);
     mt.cos_c = std::cos(t.state.course);
-    // By the encounter alone, not the risk level: a plan made before the risk is established (a
-    // predicted close pass) must already leave the target on the side the rules will want.
-    const bool colregs = colregs_factor != 1.0 &&
-                         (t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay);
-    setDomain(colregs ? give_way : domain, mt);
+    setDomain(targetDomain(t, domain, colregs_factor), mt);
     targets_.push_back(mt);
   }
 }
@@ -561,8 +575,8 @@ std::string badInput(const PlanningProblem& problem, const Eigen::Vector2d& goal
 // ACO's best trajectory grazes the domain boundary and the kinematic turns of eq. (6) flown by the
 // autopilot cut corners by up to a few hundred metres, so ACO takes a wider margin than the other
 // planners: 1.3 x min_separation (our choice; docs/results/aco.md).
-HexagonDomainConfig inflatedDomain(HexagonDomainConfig domain, double min_separation) {
-  if (!(min_separation > 0.0))
+HexagonDomainConfig inflatedDomain(HexagonDomainConfig domain, double min_separation, bool inflate) {
+  if (!inflate || !(min_separation > 0.0))
     return domain;
   const double floor = 1.3 * min_separation;
   const double smallest = std::min({domain.a, domain.b, domain.c, domain.d, domain.e});
@@ -921,7 +935,7 @@ Plan AcoRun::plan() {
   const double dist = (goal - problem_.own.position).norm();
   if (dist / cfg_.row_spacing > kMaxRows)
     return fail("final waypoint too far for the grid (" + fmt("%.0f", dist / cfg_.row_spacing) + " rows)");
-  const AcoEnvironment env(problem_, inflatedDomain(cfg_.domain, problem_.min_separation),
+  const AcoEnvironment env(problem_, inflatedDomain(cfg_.domain, problem_.min_separation, cfg_.inflate),
                            cfg_.colregs_factor);
   search_.emplace(problem_, cfg_, env, speed_);
   const Motion& m0 = search_->initial();
@@ -948,6 +962,15 @@ Plan AcoRun::plan() {
 Plan AcoPlanner::plan(const PlanningProblem& problem) {
   diag_ = AcoDiagnostics{};
   return AcoRun(problem, cfg_, diag_).plan();
+}
+
+std::vector<TargetDomain> AcoPlanner::domains(const PlanningProblem& problem) const {
+  const HexagonDomainConfig base = inflatedDomain(cfg_.domain, problem.min_separation, cfg_.inflate);
+  std::vector<TargetDomain> out;
+  for (const PlannerTarget& t : problem.targets)
+    out.push_back({t.state.id, HexagonDomain(targetDomain(t, base, cfg_.colregs_factor))
+                                   .polygon(t.state.position, t.state.course)});
+  return out;
 }
 
 }  // namespace asv

@@ -78,6 +78,7 @@ ParamMap DssaConfig::seaDefaults() {
 }
 
 DssaConfig DssaConfig::fromParams(const ParamMap& params) {
+  plannerMode(params, "dssa", false);  // sea only so far
   DssaConfig c = preset(params.getString("preset", "dssa"));
   c.speed_changes = params.getBool("speed_changes", c.speed_changes);
   c.colregs = params.getBool("colregs", c.colregs);

@@ -48,8 +48,15 @@ void GaConfig::validate() const {
   colregs.validate();
 }
 
-GaConfig GaConfig::fromParams(const ParamMap& p) {
+GaConfig GaConfig::paper() {
   GaConfig c;
+  c.elite_count = 0;
+  c.safety_penalty = c.colregs_penalty = c.new_risk_penalty = c.turn_penalty = 0.0;
+  return c;
+}
+
+GaConfig GaConfig::fromParams(const ParamMap& p) {
+  GaConfig c = plannerMode(p, "ga") == PlannerMode::Paper ? paper() : GaConfig{};
   c.population_size = p.getInt("population_size", c.population_size);
   c.generations = p.getInt("generations", c.generations);
   c.crossover_probability = p.getDouble("crossover_probability", c.crossover_probability);

@@ -65,6 +65,7 @@ void MopsoConfig::validate() const {
 }
 
 MopsoConfig MopsoConfig::fromParams(const ParamMap& p) {
+  plannerMode(p, "mopso", false);  // sea only so far
   MopsoConfig c;
   c.particles = p.getInt("particles", c.particles);
   c.generations = p.getInt("generations", c.generations);

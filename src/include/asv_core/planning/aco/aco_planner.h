@@ -89,7 +89,14 @@ struct AcoConfig {
   // target's port side or astern (Rules 14, 15) even when tracking noise puts it a little off the own
   // track. Key colregs_factor; 1 = the paper's domain. Our choice: 2.
   double colregs_factor = 2.0;
+  // Not in the paper: no side of a target's hexagon closer than 1.3 x the problem's min_separation
+  // (inflatedDomain in aco_planner.cpp). Key inflate; false = the paper's extents.
+  bool inflate = true;
 
+  // Key mode (planning.h): sea, the defaults above; paper, Lazarowska (2015) alone: no minimum first
+  // alteration, no waypoint reduction, colregs_factor 1, no inflation (the extensions' keys still
+  // override when given).
+  static AcoConfig paper();
   // Throws std::invalid_argument naming the bad field.
   void validate() const;
   // Reads the keys above (no prefix: pass params.sub("aco") for an "aco/..." tree), starting from the
@@ -100,6 +107,10 @@ struct AcoConfig {
 // The environment E of eq. (1)-(3): boundaries, static obstacles E_stat and the moving target domains
 // E_dyn(t). Times are seconds after PlanningProblem::time; the targets' states are taken at that time
 // and extrapolated at constant course and speed (the paper's assumption).
+// The hexagon round target t: `domain`, with a and c times colregs_factor when the own ship meets her
+// head-on or gives way to her (AcoConfig::colregs_factor).
+HexagonDomainConfig targetDomain(const PlannerTarget& t, const HexagonDomainConfig& domain, double colregs_factor);
+
 class AcoEnvironment {
 public:
   // colregs_factor: AcoConfig::colregs_factor (1: the same domain round every target).
@@ -208,6 +219,9 @@ public:
   void configure(const ParamMap& params) override;
   Plan plan(const PlanningProblem& problem) override;
   std::string name() const override { return "aco"; }
+  // The hexagon round each target as plan() uses it: inflated to the problem's min_separation, and
+  // colregs_factor for a head-on or give-way target (targetDomain).
+  std::vector<TargetDomain> domains(const PlanningProblem& problem) const override;
   const AcoConfig& config() const { return cfg_; }
   const AcoDiagnostics& diagnostics() const { return diag_; }
 

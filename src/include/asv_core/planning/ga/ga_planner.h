@@ -75,6 +75,9 @@ struct GaConfig {
   CriConfig cri;          // CRI model (eq. 1-6, 10-12); scale its distances to the own ship
   ColregsConfig colregs;  // encounter classification (section 2.1)
 
+  // Key mode (planning.h): sea, the defaults above; paper, Wu et al. (2022) alone: the CRI objective with
+  // no elite and no penalty (the extensions' keys still override when given).
+  static GaConfig paper();
   void validate() const;  // throws std::invalid_argument naming the bad field
   // Reads the keys above (absent keys keep the defaults); rejects unknown keys.
   static GaConfig fromParams(const ParamMap& params);
