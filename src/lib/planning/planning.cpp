@@ -33,18 +33,26 @@ PlannerTarget toPlannerTarget(const ShipState& target, const TargetRisk& r) {
   return t;
 }
 
+namespace {
+
+// `sides` vertices `r` from `centre`, counter-clockwise, the first at ENU angle `first` [rad from east].
+Polygon regularPolygon(const Eigen::Vector2d& centre, double r, int sides, double first) {
+  Polygon poly;
+  for (int k = 0; k < sides; ++k) {
+    const double a = first + 2.0 * kPi * k / sides;
+    poly.push_back(centre + r * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  return poly;
+}
+
+}  // namespace
+
 StaticObstacle pointHazard(const std::string& name, const Eigen::Vector2d& centre, double radius) {
   constexpr int kSides = 8;
   constexpr double kMinRadius = 1.0;  // [m] a point still has an inside
   // A regular polygon whose edges touch the circle: its vertices are r / cos(pi / n) from the centre.
-  const double r = std::max(radius, kMinRadius) / std::cos(M_PI / kSides);
-  StaticObstacle o;
-  o.name = name;
-  for (int k = 0; k < kSides; ++k) {
-    const double a = 2.0 * M_PI * (k + 0.5) / kSides;
-    o.polygon.push_back(centre + r * Eigen::Vector2d(std::cos(a), std::sin(a)));
-  }
-  return o;
+  const double r = std::max(radius, kMinRadius) / std::cos(kPi / kSides);
+  return {name, regularPolygon(centre, r, kSides, kPi / kSides)};
 }
 
 double pointHazardRadius(double clearance, double min_obstacle_clearance) {
@@ -100,14 +108,8 @@ std::vector<TargetDomain> separationDomains(const PlanningProblem& problem) {
   if (!(problem.min_separation > 0.0))
     return out;
   const double r = kSeparationMargin * problem.min_separation;
-  for (const PlannerTarget& t : problem.targets) {
-    TargetDomain d{t.state.id, {}};
-    for (int k = 0; k < 36; ++k) {
-      const double a = k * kPi / 18.0;
-      d.polygon.push_back(t.state.position + r * Eigen::Vector2d(std::sin(a), std::cos(a)));
-    }
-    out.push_back(std::move(d));
-  }
+  for (const PlannerTarget& t : problem.targets)
+    out.push_back({t.state.id, regularPolygon(t.state.position, r, 36, kPi / 2.0)});  // from due north
   return out;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asv_core/risk/cpa.h"
+
 namespace asv {
 
 namespace {
@@ -33,8 +35,8 @@ SceneBox sceneBox(const Scenario& sc, double margin, double after_cpa) {
   }
   for (const ScenarioShip& t : sc.targets) {
     const Eigen::Vector2d v = courseSpeedToVelocity(t.course, t.speed);
-    const Eigen::Vector2d p = t.position - sc.own.position, w = v - own_velocity;
-    const double tcpa = w.squaredNorm() > 0.0 ? std::clamp(-p.dot(w) / w.squaredNorm(), 0.0, horizon) : 0.0;
+    const double tcpa =
+        std::clamp(computeCpa(sc.own.position, own_velocity, t.position, v).tcpa, 0.0, horizon);
     include(b, t.position);
     include(b, t.position + v * std::min(horizon, tcpa + after_cpa));
   }
