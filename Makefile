@@ -19,7 +19,7 @@ CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_CXX_FLAGS="$(CXXFLAGS_EXTRA)"
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test install bench benchmark demo clean format lint eval eval-ros dssa-results soak test-asan fuzz-long
+.PHONY: help setup build test install bench benchmark demo clean format lint eval eval-ros papers soak test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
@@ -31,7 +31,8 @@ help:
 	@echo "  make eval    every scenario with every planner through asv_batch (out/eval/)"
 	@echo "  make benchmark  generated situations (tuning and test seed ranges) x every planner: out/benchmark/"
 	@echo "  make eval-ros  the same pairs through the ROS pipeline in lockstep against asv_batch (out/eval_ros/)"
-	@echo "  make dssa-results  the DSSA paper's three experiments through asv_batch -> docs/results/dssa.md"
+	@echo "  make papers  the four papers' experiments in paper mode against their numbers: docs/results/*.md,"
+	@echo "               out/papers/summary.json (PAPERS_ARGS=\"--only dssa\" for one paper)"
 	@echo "  make soak    2 simulated hours, 50 ships, the whole ROS pipeline: memory and rates (out/soak/)"
 	@echo "  make test-asan  build and run the asv_core unit tests under ASan+UBSan (build_asan/)"
 	@echo "  make fuzz-long  run each libFuzzer target for FUZZ_RUNS executions (10 M), out/fuzz/summary.txt"
@@ -62,6 +63,7 @@ test: build
 	@scripts/catkin_lint_check.py build/test_results/catkin_lint.xml || true
 	@$(DEVEL) && scripts/readme_check.py build/test_results/readme_check.xml || true
 	@scripts/plot_check.py build/test_results/plot_check.xml || true
+	@$(DEVEL) && scripts/papers_check.py build/test_results/papers_check.xml || true
 	@JOBS=$(JOBS) scripts/install_check.py build/test_results/install_check.xml || true
 	@if [ "$(ASAN)" = 1 ]; then echo "test: asv_core unit tests under ASan+UBSan (build_asan/, log build/asan.log)..."; \
 	  JOBS=$(JOBS) scripts/asan_tests.sh > build/asan.log 2>&1 || true; fi
@@ -128,9 +130,10 @@ EVAL_ROS_ARGS ?=
 eval-ros: build
 	@$(DEVEL) && scripts/eval_ros.py $(EVAL_ROS_ARGS)
 
-# Hirayama et al. (2019) Sec. 5, Tables 1-3, through asv_batch: docs/results/dssa.md (scripts/dssa_results.py).
-dssa-results: build
-	@$(DEVEL) && scripts/dssa_results.py
+# The experiments of the four papers, closed loop through asv_batch, each planner in paper mode, every
+# reported number compared two-sided: docs/results/{aco,dssa,mopso,ga}.md and out/papers/summary.json.
+papers: build
+	@$(DEVEL) && scripts/papers.py $(PAPERS_ARGS)
 
 # Soak (docs/reliability.md): SOAK_SIM_TIME simulated seconds of asv_bringup/test/soak_50_ships.yaml through
 # the whole pipeline as fast as it sustains; out/soak/summary.json, exit 1 on a failed criterion.

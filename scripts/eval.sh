@@ -12,9 +12,13 @@
 # repository) and run with all five planners, seed 1 only (recorded traffic has no randomness; a run
 # through 90 real ships takes minutes). Without the file a line says they are skipped.
 #
+# Mode: every planner runs in sea mode (the stack at sea), also on the papers' scenarios whose files
+# default to paper mode; EVAL_MODE=paper runs the methods as published (make papers compares those).
+#
 # usage: scripts/eval.sh [SEEDS]   (default 3; env EVAL_SCENARIOS="a b" restricts the scenarios)
 set -u
 SEEDS=${1:-3}
+MODE=${EVAL_MODE:-sea}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$ROOT/out/eval
 BATCH=${ASV_BATCH:-$ROOT/devel/lib/asv_sim/asv_batch}
@@ -73,7 +77,7 @@ for job in "${jobs[@]}"; do
   for seed in $(seq 1 "$seeds"); do
     n=$((n + 1))
     traj="$OUT/traj/${name}__${p}__s${seed}.csv"
-    line=$("$BATCH" --scenario "$f" --planner "$p" --seed "$seed" --trajectory "$traj" --json "$OUT/results.jsonl" 2>&1 >/dev/null | tail -1)
+    line=$("$BATCH" --scenario "$f" --planner "$p" --set "$p.mode=$MODE" --seed "$seed" --trajectory "$traj" --json "$OUT/results.jsonl" 2>&1 >/dev/null | tail -1)
     rc=${PIPESTATUS[0]}
     if [ "$rc" -ne 0 ] || [ ! -s "$traj" ]; then failed=$((failed + 1)); echo "[$n/$total] FAILED $name / $p / seed $seed: $line";
     else echo "[$n/$total] $line"; plots+=("$traj" "$OUT/plots/${name}__${p}__s${seed}.png"); fi

@@ -2,6 +2,7 @@
 readme_check.py), which scripts/test_summary.py then counts with the rest."""
 import os
 import sys
+import traceback
 from xml.sax.saxutils import escape, quoteattr
 
 
@@ -22,3 +23,18 @@ def write(out, suite, case, failure=None, details=""):
         f.write('<?xml version="1.0" encoding="utf-8"?>\n<testsuite name="%s" tests="1" failures="%d">'
                 '<testcase classname="%s" name="%s">%s</testcase></testsuite>\n'
                 % (suite, 0 if failure is None else 1, suite, case, body))
+
+
+def run(doc, suite, case, checks, ok_text):
+    """The whole check script: each of `checks` is called with a function that records a finding (a crash
+    is a finding too); writes the case to OUT.xml, prints the findings or `ok_text`, returns the exit status."""
+    out = out_path(doc)
+    findings = []
+    for check in checks:
+        try:
+            check(findings.append)
+        except Exception:
+            findings.append(traceback.format_exc())
+    write(out, suite, case, "%d %s finding(s)" % (len(findings), suite) if findings else None, "\n".join(findings))
+    print("%s: %s" % (case, ok_text if not findings else "\n" + "\n".join(findings)))
+    return 1 if findings else 0

@@ -44,11 +44,16 @@ asv::PlannerNodeConfig plannerConfig(const asv::ParamMap& params) {
 
 // The plan follower's settings. In lockstep a plan costs no simulated time: the budget only guards
 // against a plugin that never returns, and plugins that stop at their budget give the same plan on
-// any machine.
-asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool lockstep) {
+// any machine. Paper mode switches the follower's sea extensions off (applyPlannerMode).
+asv::PlannerMode modeOf(const std::string& mode) {
+  return mode == "paper" ? asv::PlannerMode::Paper : asv::PlannerMode::Sea;
+}
+
+asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool lockstep, const std::string& mode) {
   asv::PlanFollowerConfig fc = p.follower;
   if (lockstep)
     fc.time_budget = p.lockstep_time_budget;
+  asv::applyPlannerMode(fc, modeOf(mode));
   return fc;
 }
 
@@ -118,7 +123,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
              p.follower.cruise_speed, limits.max_speed);
     limits.max_speed = p.follower.cruise_speed;
   }
-  follower_config_ = followerConfig(p, lockstep_.enabled());
+  follower_config_ = followerConfig(p, lockstep_.enabled(), mode_);
   follower_ = std::make_unique<asv::PlanFollower>(follower_config_);  // validates: throws on a bad value
   if (p.has_goal)
     follower_->setGoal(p.goal);
@@ -353,8 +358,8 @@ void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerT
   const ros::WallTime start = ros::WallTime::now();
   asv::Plan plan;
   try {
-    plan =
-        asv::planUnderSharedRules([this](const asv::PlanningProblem& p) { return plugin_->makePlan(p); }, pr);
+    plan = asv::planInMode([this](const asv::PlanningProblem& p) { return plugin_->makePlan(p); }, pr,
+                           modeOf(mode_));
   } catch (const std::exception& e) {
     ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), e.what());
     plan = follower_->fallback(targets, std::string("plugin error: ") + e.what());
@@ -494,7 +499,7 @@ void PlannerNode::reconfigure(PlannerConfig& c, uint32_t /*level*/) {
   next.follower.stand_on_policy = c.stand_on_policy;
   next.planner = c.planner.empty() ? scenario_planner_ : c.planner;
   next.mode = c.mode;
-  asv::PlanFollowerConfig fc = followerConfig(next, lockstep_.enabled());
+  asv::PlanFollowerConfig fc = followerConfig(next, lockstep_.enabled(), next.mode);
   fc.cruise_speed = follower_->cruiseSpeed();
   pluginlib::UniquePtr<PlannerPlugin> plugin;
   try {

@@ -11,8 +11,9 @@ planner_live's parameters while it plans:
   plan comes from MOPSO ("parameters changed" replans at once), diagnostics report 1500 m in force, and
   `domains` shows the separation circle round T1: radius 1.1 x 1500 = 1650 m (kSeparationMargin);
 - planner "bogus": refused with an ERROR on /rosout, MOPSO stays;
-- mode paper with MOPSO: refused (MOPSO has no paper mode yet), the reason on /rosout; planner ga with
-  mode paper: accepted, the next plan from GA, diagnostics report mode paper;
+- mode "harbour": refused (sea or paper), the reason on /rosout; mode paper with MOPSO: accepted, the
+  next plan from MOPSO, diagnostics report mode paper; planner ga with mode paper: accepted, the next plan
+  from GA;
 - replan_period 0.5 s: below the stated range (1-600 s), so the server clamps it to 1 s.
 """
 import math
@@ -130,9 +131,15 @@ class LiveParameters(unittest.TestCase):
         self.assertEqual(c["planner"], "mopso", "a planner that cannot load is refused")
         self.assertTrue(wait_for(lambda: any("live parameters refused" in e for e in errors), 10.0), errors)
 
+        c = client.update_configuration({"mode": "harbour"})
+        self.assertEqual((c["planner"], c["mode"]), ("mopso", "sea"), "an unknown mode is refused")
+        self.assertTrue(wait_for(lambda: any("mode must be sea or paper" in e for e in errors), 10.0), errors)
+        n = len(plans)
         c = client.update_configuration({"mode": "paper"})
-        self.assertEqual((c["planner"], c["mode"]), ("mopso", "sea"), "mopso has no paper mode yet")
-        self.assertTrue(wait_for(lambda: any("paper is not available" in e for e in errors), 10.0), errors)
+        self.assertEqual((c["planner"], c["mode"]), ("mopso", "paper"))
+        self.assertTrue(wait_for(lambda: len(plans) > n and plans[-1].planner == "mopso", 20.0),
+                        "no plan from mopso in paper mode")
+        self.assertTrue(wait_for(lambda: modes and modes[-1] == "paper", 10.0), modes[-1:])
         n = len(plans)
         c = client.update_configuration({"planner": "ga", "mode": "paper"})
         self.assertEqual((c["planner"], c["mode"]), ("ga", "paper"))

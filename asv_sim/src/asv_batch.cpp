@@ -26,6 +26,7 @@
 
 #include <asv_core/eval/evaluation.h>
 #include <asv_core/planning/dssa/dssa.h>
+#include <asv_core/planning/ga/ga_planner.h>
 #include <asv_core/planning/plan_follower.h>
 #include <asv_core/risk/risk_assessment.h>
 #include <asv_core/sim/scenario.h>
@@ -47,6 +48,8 @@ const char* kUsage =
     "  --agents NAME        planner of every target whose behaviour is planner (default: each its own)\n"
     "  --set P.KEY=VALUE    planner parameter, over the scenario's planner_params (repeatable), e.g.\n"
     "                       --set dssa_plus.preset=dssa_plus_sc\n"
+    "  --follower KEY=VALUE a replanning-policy parameter of planner_node (planner_node.yaml; repeatable),\n"
+    "                       e.g. --follower replan_on_risk=false\n"
     "  --charts SOURCE      land from gshhg or a chart file (GeoJSON, shapefile, S-57 cell) over the\n"
     "                       scenario's charts.source (the scenario needs an origin)\n"
     "  --chart-cache DIR    chart extraction cache (default $ASV_CHART_CACHE or ~/.cache/asv/charts;\n"
@@ -56,6 +59,9 @@ const char* kUsage =
     "  --json OUT           append the results to OUT (JSON Lines); default: stdout\n"
     "  --trajectory CSV     write t_s,ship,x_m,y_m,course_deg,speed_mps,lat_deg,lon_deg rows (every\n"
     "                       --sample-period); with --runs > 1 the seed goes into the name: CSV_seed<S>.csv\n"
+    "  --risk CSV           write the own ship's risk picture, one row per target every --sample-period:\n"
+    "                       t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role (Hu et al. 2017\n"
+    "                       risk level 0/1/2 and Algorithm 1 flag); with --runs > 1 named as --trajectory\n"
     "  --geojson FILE       write the run as GeoJSON for a GIS (tracks, closest approaches, manoeuvres,\n"
     "                       land; longitude/latitude); with --runs > 1 named as --trajectory\n"
     "  --dt DT              integration step [s] (default 0.1)\n"
@@ -69,10 +75,11 @@ const char* kUsage =
     "exit status: 0 done (whatever the runs' outcomes), 2 bad arguments, scenario or planner, 1 failure.\n";
 
 struct Options {
-  std::string scenario, planner, json, trajectory, geojson, agents;
+  std::string scenario, planner, json, trajectory, geojson, agents, risk;
   bool planner_given = false;
   asv::ChartOptions charts;
   std::vector<std::pair<std::string, std::string>> params;  // "planner/key", value
+  asv::ParamMap follower;                                   // PlanFollowerConfig keys
   uint64_t seed = 1;
   int runs = 1;
   double dt = 0.1;
@@ -125,6 +132,12 @@ Options parseArgs(int argc, char** argv) {
       if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 >= eq)
         usageError("--set needs PLANNER.KEY=VALUE, got '" + kv + "'");
       o.params.emplace_back(kv.substr(0, dot) + "/" + kv.substr(dot + 1, eq - dot - 1), kv.substr(eq + 1));
+    } else if (a == "--follower") {
+      const std::string kv = value();
+      const size_t eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0)
+        usageError("--follower needs KEY=VALUE, got '" + kv + "'");
+      o.follower.set(kv.substr(0, eq), kv.substr(eq + 1));
     } else if (a == "--seed") {
       const double s = parseNumber(a, value());
       if (s < 0 || s != std::floor(s))
@@ -139,6 +152,8 @@ Options parseArgs(int argc, char** argv) {
       o.json = value();
     } else if (a == "--trajectory") {
       o.trajectory = value();
+    } else if (a == "--risk") {
+      o.risk = value();
     } else if (a == "--geojson") {
       o.geojson = value();
     } else if (a == "--dt") {
@@ -165,6 +180,12 @@ Options parseArgs(int argc, char** argv) {
     usageError("--scenario FILE is required");
   if (o.deterministic)
     o.time_budget = 60.0;
+  try {
+    asv::PlanFollowerConfig::fromParams(o.follower);
+    o.follower.rejectUnknown("--follower");
+  } catch (const std::exception& e) {
+    usageError(e.what());
+  }
   return o;
 }
 
@@ -173,10 +194,11 @@ bool isDssa(const std::string& p) {
 }
 
 asv::DssaConfig dssaConfig(const std::string& planner, const asv::ParamMap& scenario_params) {
-  // The plugins' sea-scale defaults: the agents of the in-process exchange negotiate like the plugin.
-  asv::ParamMap p = asv::DssaConfig::seaDefaults();
-  p.set("preset", planner);
+  // The plugins' sea-scale defaults (sea mode only): the agents of the exchange negotiate like the plugin.
   const asv::ParamMap own = scenario_params.sub(planner);
+  asv::ParamMap p =
+      own.getString("mode", "sea") == "paper" ? asv::ParamMap{} : asv::DssaConfig::seaDefaults();
+  p.set("preset", planner);
   for (const auto& kv : own.values())
     p.set(kv.first, kv.second);
   return asv::DssaConfig::fromParams(p);
@@ -226,6 +248,7 @@ private:
 struct PluginShip {
   size_t index;
   std::string planner;
+  asv::PlannerMode mode;
   pluginlib::UniquePtr<asv_planning::PlannerPlugin> plugin;
   asv::PlanFollower follower;
   asv::RiskAssessor risk;
@@ -264,6 +287,7 @@ private:
   void addDssaGroup();
   void openTrajectory();
   void writeTrajectory();
+  void writeRisk(double now, const std::vector<asv::PlannerTarget>& targets);
   void sample();
   void planPluginShip(PluginShip& ps, double now);
   void dssaPhase(double now);
@@ -283,7 +307,8 @@ private:
   std::vector<Eigen::Vector2d> agent_goals_;
   std::unique_ptr<asv::DssaExchange> exchange_;
   double dssa_period_ = 10.0;
-  std::ofstream traj_;
+  std::ofstream traj_, risk_;
+  double next_risk_ = 0.0;
 };
 
 asv::SimConfig simConfig(const Options& o) {
@@ -321,15 +346,22 @@ void BatchRun::addPluginShips(asv_planning::PluginLoader& loader) {
     const std::string& p = planner_of_[i];
     if (p.empty() || p == "none" || (exchange_mode_ && isDssa(p)))
       continue;
-    asv::PlanFollowerConfig fc;
+    asv::PlanFollowerConfig fc = asv::PlanFollowerConfig::fromParams(o_.follower);
     fc.time_budget = o_.time_budget;
     fc.seed = static_cast<int>(seed_);
     fc.cruise_speed = vs[i].cruise_speed;
     fc.min_separation = sc_.min_separation;
+    const asv::PlannerMode mode = asv::plannerMode(sc_.planner_params.sub(p), p);
+    asv::applyPlannerMode(fc, mode);
     if (sc_.min_obstacle_clearance > 0.0)
       fc.min_obstacle_clearance_m = sc_.min_obstacle_clearance;  // the waters' own (a port)
-    auto ps = std::make_unique<PluginShip>(PluginShip{i, p, loader.load(p, sc_.planner_params.sub(p)),
-                                                      asv::PlanFollower(fc), asv::RiskAssessor()});
+    // The risk picture's CRI (--risk) uses the GA planner's own CRI scaling (Wu et al. 2022 eq. 1-12 as
+    // configured for the scenario's ship), so that it shows the values the planner decides on.
+    asv::RiskConfig rc;
+    if (p == "ga")
+      rc.cri = asv::GaConfig::fromParams(sc_.planner_params.sub("ga")).cri;
+    auto ps = std::make_unique<PluginShip>(PluginShip{i, p, mode, loader.load(p, sc_.planner_params.sub(p)),
+                                                      asv::PlanFollower(fc), asv::RiskAssessor(rc)});
     if (vs[i].goal)
       ps->follower.setGoal(*vs[i].goal);
     ps->follower.setObstacles(sc_.obstacles);
@@ -354,13 +386,33 @@ void BatchRun::addDssaGroup() {
 }
 
 void BatchRun::openTrajectory() {
-  if (o_.trajectory.empty())
+  auto open = [&](std::ofstream& f, const std::string& name, const char* what, const char* header) {
+    if (name.empty())
+      return;
+    const std::string path = seedPath(o_, name, seed_);
+    f.open(path);
+    if (!f)
+      throw std::runtime_error(std::string("cannot write ") + what + " file " + path);
+    f << header;
+  };
+  open(traj_, o_.trajectory, "trajectory", "t_s,ship,x_m,y_m,course_deg,speed_mps,lat_deg,lon_deg\n");
+  open(risk_, o_.risk, "risk", "t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role\n");
+}
+
+// The own ship's picture as its planner saw it (the plugin ship's RiskAssessor), every sample period.
+void BatchRun::writeRisk(double now, const std::vector<asv::PlannerTarget>& targets) {
+  if (!risk_.is_open() || now < next_risk_ - 1e-9)
     return;
-  const std::string path = seedPath(o_, o_.trajectory, seed_);
-  traj_.open(path);
-  if (!traj_)
-    throw std::runtime_error("cannot write trajectory file " + path);
-  traj_ << "t_s,ship,x_m,y_m,course_deg,speed_mps,lat_deg,lon_deg\n";
+  next_risk_ += o_.sample_period;
+  static const char* kRoles[] = {"none", "give_way", "stand_on", "both_give_way"};
+  const Eigen::Vector2d own = sim_.vessels()[0].position();
+  char buf[256];
+  for (const asv::PlannerTarget& t : targets) {
+    std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.4f,%d,%d,%s\n", now, t.state.id.c_str(),
+                  (t.state.position - own).norm(), t.tcpa, t.dcpa, t.cri, static_cast<int>(t.risk),
+                  t.compliant ? 1 : 0, kRoles[std::min<int>(static_cast<int>(t.role), 3)]);
+    risk_ << buf;
+  }
 }
 
 void BatchRun::writeTrajectory() {
@@ -397,6 +449,8 @@ void BatchRun::planPluginShip(PluginShip& ps, double now) {
   if (v.arrived)
     return;
   const std::vector<asv::PlannerTarget> targets = plannerTargets(sim_, ps.index, ps.risk);
+  if (ps.index == 0)
+    writeRisk(now, targets);
   ps.follower.updateOwn(v.shipState());
   std::string why;
   if (ps.follower.replanNeeded(now, targets, why)) {
@@ -404,8 +458,8 @@ void BatchRun::planPluginShip(PluginShip& ps, double now) {
     const auto t0 = std::chrono::steady_clock::now();
     asv::Plan plan;
     try {
-      plan = asv::planUnderSharedRules([&](const asv::PlanningProblem& p) { return ps.plugin->makePlan(p); },
-                                       pr);
+      plan =
+          asv::planInMode([&](const asv::PlanningProblem& p) { return ps.plugin->makePlan(p); }, pr, ps.mode);
     } catch (const std::exception& e) {
       plan = ps.follower.fallback(targets, std::string("plugin error: ") + e.what());
     }

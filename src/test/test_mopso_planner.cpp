@@ -384,6 +384,31 @@ TEST(MopsoPlanner, NonCompliantTargetMakesStandOnShipEvade) {
   EXPECT_LT(minSeparation(hold, late, 900.0), 100.0);
 }
 
+// Rule 17(c): A, the non-compliant give-way ship of Fig. 6, is on the own port bow. With d_min raised to
+// 6 nm and alterations up to 30 deg no starboard plan keeps d_min (pass 1 finds nothing feasible), yet
+// starboard plans still pass A outside the situation's 926 m: one of them is kept (pass 3), not a port
+// turn. When the minimum separation itself is out of reach to starboard, Rule 17(b) lets the port pass
+// run (pass 2).
+TEST(MopsoPlanner, Rule17cKeepsStarboardForAShipOnThePortSide) {
+  MopsoConfig cfg;
+  cfg.inflate = false;
+  cfg.d_min_m = 11112.0;
+  cfg.search_alteration_deg = 30.0;  // no 90 deg turn onto A's own course (range constant, "no approach")
+  MopsoPlanner planner(cfg);
+  PlanningProblem late = huNonCompliantTarget(310.0);
+  late.min_separation = 926.0;
+  const Plan starboard = planner.plan(late);
+  EXPECT_EQ(planner.lastResult().rule.action, HuAction::Rule2Evade);
+  EXPECT_EQ(planner.lastResult().pass, 3) << starboard.message;
+  EXPECT_GT(planAlterationDeg(starboard, late), 0.0) << starboard.message;
+  EXPECT_GE(minSeparation(starboard, late, cfg.cpa_horizon_s), 926.0 - 1.0);
+  EXPECT_NE(starboard.message.find("Rule 17(c)"), std::string::npos) << starboard.message;
+
+  late.min_separation = 11000.0;
+  const Plan extremis = planner.plan(late);
+  EXPECT_EQ(planner.lastResult().pass, 2) << extremis.message;
+}
+
 TEST(MopsoPlanner, MultiTargetPlanIsFeasible) {
   const PlanningProblem p = huMultiTarget();
   MopsoPlanner planner;

@@ -35,10 +35,11 @@ asv::PlannerTarget standOnTarget(bool compliant, asv::RiskLevel risk) {
   return t;
 }
 
-asv::PlanFollower follower(bool stand_on_policy = true) {
+asv::PlanFollower follower(bool stand_on_policy = true, bool replan_on_risk = true) {
   asv::PlanFollowerConfig c;
   c.min_separation = 926.0;
   c.stand_on_policy = stand_on_policy;
+  c.replan_on_risk = replan_on_risk;
   asv::PlanFollower f(c);
   f.setGoal({0.0, 20000.0});
   f.updateOwn(own());
@@ -62,6 +63,69 @@ TEST(PlanFollower, StandOnKeepsOutCompliantGiveWayTargetsOnly) {
 
 TEST(PlanFollower, PassesTheMinimumSeparationToThePlanners) {
   EXPECT_DOUBLE_EQ(follower().buildProblem(0.0, {}).min_separation, 926.0);
+}
+
+// replan_on_risk false (plan once, as Lazarowska 2015): a far target's rise from 0 to 2 no longer
+// replans a plan that stays safe; a plan predicted to pass inside the minimum separation still does.
+TEST(PlanFollower, PlanOnceIgnoresRisingRiskButNotAnUnsafePlan) {
+  asv::PlanFollower f = follower(false, false);
+  std::string why;
+  asv::Plan p;
+  p.status = asv::PlanStatus::Ok;
+  p.waypoints = {{{0.0, 0.0}, 0.0, 0.0, 6.0}, {{0.0, 20000.0}, 3333.0, 0.0, 6.0}};
+  asv::PlannerTarget t = standOnTarget(false, asv::RiskLevel::None);
+  t.state.position = {-30000.0, 30000.0};
+  f.acceptPlan(p, 0.0, {t}, "test");
+  t.risk = asv::RiskLevel::Urgent;
+  EXPECT_FALSE(f.replanNeeded(10.0, {t}, why)) << why;
+  // A stopped ship 500 m off the planned track: predicted clearance 500 m < 926 m.
+  t.state.position = {500.0, 5000.0};
+  t.state.speed = 0.0;
+  EXPECT_TRUE(f.replanNeeded(20.0, {t}, why));
+  EXPECT_NE(why.find("plan predicted to pass within"), std::string::npos) << why;
+}
+
+// Paper mode: the follower's stand-on policy and minimum separation are sea extensions (off), and the
+// planner's plan is taken as it is, without the shared rules' separation net or retries.
+TEST(PlanFollower, PaperModeSwitchesTheSeaExtensionsOff) {
+  asv::PlanFollowerConfig c;
+  c.min_separation = 926.0;
+  asv::applyPlannerMode(c, asv::PlannerMode::Sea);
+  EXPECT_TRUE(c.stand_on_policy);
+  EXPECT_EQ(c.min_separation, 926.0);
+  asv::applyPlannerMode(c, asv::PlannerMode::Paper);
+  EXPECT_FALSE(c.stand_on_policy);
+  EXPECT_EQ(c.min_separation, 0.0);
+
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {0.0, 20000.0};
+  pr.min_separation = 926.0;
+  asv::PlannerTarget head_on = standOnTarget(false, asv::RiskLevel::Urgent);
+  head_on.state.position = {0.0, 3000.0};
+  head_on.state.course = head_on.state.heading = asv::degToRad(180.0);
+  head_on.state.speed = 6.0;
+  head_on.encounter = asv::Encounter::HeadOn;
+  head_on.role = asv::OwnRole::BothGiveWay;
+  head_on.tcpa = 250.0;
+  pr.targets = {head_on};
+  int calls = 0;
+  auto straight = [&](const asv::PlanningProblem& q) {  // through the target: breaks the separation rule
+    ++calls;
+    asv::Plan p;
+    p.status = asv::PlanStatus::Ok;
+    p.course_setpoint = 0.0;
+    p.speed_setpoint = 6.0;
+    p.waypoints = {{q.own.position, 0.0, 0.0, 6.0}, {{0.0, 20000.0}, 3333.0, 0.0, 6.0}};
+    return p;
+  };
+  const asv::Plan paper = asv::planInMode(straight, pr, asv::PlannerMode::Paper);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(paper.course_setpoint, 0.0);
+  calls = 0;
+  const asv::Plan sea = asv::planInMode(straight, pr, asv::PlannerMode::Sea);
+  EXPECT_GT(calls, 1);  // refused and asked again, then the separation net
+  EXPECT_NE(sea.course_setpoint, 0.0) << sea.message;
 }
 
 TEST(PlanFollower, RiskMustStayClearBeforeARiseReplansAgain) {

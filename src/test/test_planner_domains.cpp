@@ -6,6 +6,7 @@
 
 #include "asv_core/common/units.h"
 #include "asv_core/planning/aco/aco_planner.h"
+#include "asv_core/planning/dssa/dssa.h"
 #include "asv_core/planning/ga/ga_planner.h"
 #include "asv_core/planning/mopso/mopso_planner.h"
 
@@ -67,8 +68,8 @@ TEST(PlannerDomains, OthersShowTheSeparationRule) {
 
 // mode paper (planning.h): ACO as Lazarowska (2015) published it plans round the paper's hexagon itself,
 // with no inflation and no COLREGs doubling: head-on, bow (0, 10000 - 1852), starboard beam
-// (-1111.2, 10000), port beam (463, 10000). Any other mode is refused, and so is paper mode for an
-// algorithm that has none yet.
+// (-1111.2, 10000), port beam (463, 10000). Any other mode is refused. MOPSO and DSSA+ switch their
+// own extensions.
 TEST(PlannerModes, PaperModeIsThePublishedMethod) {
   asv::AcoPlanner aco;
   asv::ParamMap paper;
@@ -90,11 +91,15 @@ TEST(PlannerModes, PaperModeIsThePublishedMethod) {
   asv::ParamMap other;
   other.set("mode", "harbour");
   EXPECT_THROW(aco.configure(other), std::invalid_argument);
-  asv::MopsoPlanner mopso;
-  try {
-    mopso.configure(paper);
-    FAIL() << "mopso has no paper mode yet";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("not available"), std::string::npos) << e.what();
-  }
+  // Hu et al. (2017): d_min of eq. (8) as set, not raised to 1.1 x the situation's minimum separation.
+  EXPECT_FALSE(asv::MopsoConfig::fromParams(paper).inflate);
+  EXPECT_TRUE(asv::MopsoConfig::fromParams({}).inflate);
+  // Hirayama et al. (2019): s>c read with the smaller weight 1 (alpha 10, beta 1); sea keeps alpha 1.
+  asv::ParamMap sc = paper;
+  sc.set("preset", "dssa_plus_sc");
+  EXPECT_EQ(asv::DssaConfig::fromParams(sc).alpha, 10.0);
+  EXPECT_EQ(asv::DssaConfig::fromParams(sc).beta, 1.0);
+  sc.set("mode", "sea");
+  EXPECT_EQ(asv::DssaConfig::fromParams(sc).alpha, 1.0);
+  EXPECT_EQ(asv::DssaConfig::fromParams(sc).beta, 0.1);
 }

@@ -27,31 +27,72 @@ TEST(RiskLevel, ConfigMustOrderThresholds) {
 TEST(ComplianceMonitor, Algorithm1) {
   ComplianceMonitor m;
   // Risk 1 then 2: the give-way target did not act -> non-compliant, Rule 2 (Table 1, x).
-  ComplianceResult r = m.update("a", 1000, 800);
+  ComplianceResult r = m.update("a", 1000, 800, true);
   EXPECT_EQ(r.risk, RiskLevel::Collision);
   EXPECT_TRUE(r.compliant);
   EXPECT_EQ(r.decision, RuleDecision::RuleApplies);
-  r = m.update("a", 500, 300);
+  r = m.update("a", 500, 300, true);
   EXPECT_EQ(r.risk, RiskLevel::Urgent);
   EXPECT_FALSE(r.compliant);
   EXPECT_EQ(r.decision, RuleDecision::Rule2);
-  r = m.update("a", 400, 300);  // still urgent: the flag stays
+  r = m.update("a", 400, 300, true);  // still urgent: the flag stays
   EXPECT_FALSE(r.compliant);
-  r = m.update("a", -5, 300);  // passed: no risk, compliant again
+  r = m.update("a", -5, 300, true);  // passed: no risk, compliant again
   EXPECT_EQ(r.risk, RiskLevel::None);
   EXPECT_TRUE(r.compliant);
   EXPECT_EQ(r.decision, RuleDecision::NoRule);
   // Risk 2 straight from 0 (a target appearing close) stays compliant, also on the next update.
-  r = m.update("b", 300, 100);
+  r = m.update("b", 300, 100, true);
   EXPECT_EQ(r.risk, RiskLevel::Urgent);
   EXPECT_TRUE(r.compliant);
-  EXPECT_TRUE(m.update("b", 290, 100).compliant);
+  EXPECT_TRUE(m.update("b", 290, 100, true).compliant);
   // Histories are per target.
-  m.update("c", 1000, 800);
-  EXPECT_TRUE(m.update("d", 300, 100).compliant);
-  EXPECT_FALSE(m.update("c", 300, 100).compliant);
+  m.update("c", 1000, 800, true);
+  EXPECT_TRUE(m.update("d", 300, 100, true).compliant);
+  EXPECT_FALSE(m.update("c", 300, 100, true).compliant);
   m.retainOnly({"c"});
   EXPECT_EQ(m.size(), 1u);
+}
+
+// Hu et al. (2017) Sec. 2.1: only a target "required to manoeuvre ... as a give-way vessel" is flagged.
+// The same risk 1 -> 2 history for a target the own ship gives way to (a crossing from starboard)
+// leaves it compliant: Rule 2(b) is not invoked against a ship that was right to stand on.
+TEST(ComplianceMonitor, OnlyAGiveWayTargetIsFlagged) {
+  ComplianceMonitor m;
+  EXPECT_TRUE(m.update("so", 1000, 800, false).compliant);
+  const ComplianceResult r = m.update("so", 500, 300, false);
+  EXPECT_EQ(r.risk, RiskLevel::Urgent);
+  EXPECT_TRUE(r.compliant);
+  EXPECT_EQ(r.decision, RuleDecision::RuleApplies);
+}
+
+// Through the assessor: own ship north-bound, a target crossing from starboard (own ship gives way,
+// Rule 15) that closes from risk 1 to risk 2 is not flagged; the mirror image from port is.
+TEST(ComplianceMonitor, AssessorPassesTheRole) {
+  for (double side : {1.0, -1.0}) {
+    RiskAssessor assessor;
+    ShipState own;
+    own.id = "own";
+    own.heading = own.course = 0.0;
+    own.speed = 6.0;
+    ShipState t;
+    t.id = "t";
+    // Westbound from starboard, eastbound from port.
+    const double heading = degToRad(side > 0 ? 270.0 : 90.0);
+    t.heading = t.course = heading;
+    t.speed = 6.0;
+    // Both reach (0, 6000) at TCPA: risk 1 at 1000 s, risk 2 at 500 s (t_safe 600 s, d_safe 926 m).
+    for (double tcpa : {1000.0, 500.0}) {
+      own.position = {0.0, 6000.0 - 6.0 * tcpa};
+      t.position = {side * 6.0 * tcpa, 6000.0};
+      const TargetRisk r = assessor.assess(own, t);
+      EXPECT_NEAR(r.cpa.tcpa, tcpa, 1e-6);
+      if (tcpa < 600.0) {
+        EXPECT_EQ(r.geometry.role, side > 0 ? OwnRole::GiveWay : OwnRole::StandOn);
+        EXPECT_EQ(r.compliance.compliant, side > 0) << "side " << side;
+      }
+    }
+  }
 }
 
 TEST(RiskAssessor, CombinesCpaCriEncounterAndFlag) {

@@ -20,7 +20,7 @@ public:
 
 protected:
   // `defaults`: the plugin's sea-scale defaults where the algorithm's own follow its paper's units;
-  // keys given to initialize() override them.
+  // keys given to initialize() override them. They apply in sea mode only (key `mode`, planning.h).
   explicit AlgorithmPlugin(std::unique_ptr<asv::PlannerAlgorithm> algorithm, asv::ParamMap defaults = {})
       : algorithm_(std::move(algorithm)), defaults_(std::move(defaults)) {}
 

@@ -46,6 +46,7 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   c.seed = p.getInt("seed", c.seed);
   c.min_separation = p.getDouble("min_separation", c.min_separation);
   c.stand_on_policy = p.getBool("stand_on_policy", c.stand_on_policy);
+  c.replan_on_risk = p.getBool("replan_on_risk", c.replan_on_risk);
   c.risk_clear_time = p.getDouble("risk_clear_time", c.risk_clear_time);
   c.degraded_plan_hold = p.getDouble("degraded_plan_hold", c.degraded_plan_hold);
   c.min_obstacle_clearance_m = p.getDouble("min_obstacle_clearance_m", c.min_obstacle_clearance_m);
@@ -141,6 +142,18 @@ struct RuleCheck {
 };
 
 }  // namespace
+
+void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode) {
+  if (mode != PlannerMode::Paper)
+    return;
+  cfg.stand_on_policy = false;
+  cfg.min_separation = 0.0;
+}
+
+Plan planInMode(const std::function<Plan(const PlanningProblem&)>& make, const PlanningProblem& problem,
+                PlannerMode mode) {
+  return mode == PlannerMode::Paper ? make(problem) : planUnderSharedRules(make, problem);
+}
 
 Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries) {
@@ -351,7 +364,7 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
     none_since_.erase(t.state.id);
     const RiskLevel before = it == known_levels_.end() ? RiskLevel::None : it->second;
     // Only rises replan: a level that falls (or flickers round a threshold) would make the ship dither.
-    if (static_cast<int>(t.risk) > static_cast<int>(before)) {
+    if (cfg_.replan_on_risk && static_cast<int>(t.risk) > static_cast<int>(before)) {
       why = "risk of " + t.state.id + " " + std::to_string(static_cast<int>(before)) + " -> " +
             std::to_string(static_cast<int>(t.risk));
       return true;

@@ -113,14 +113,12 @@ std::vector<TargetDomain> separationDomains(const PlanningProblem& problem) {
   return out;
 }
 
-PlannerMode plannerMode(const ParamMap& params, const std::string& algorithm, bool has_paper) {
+PlannerMode plannerMode(const ParamMap& params, const std::string& algorithm) {
   const std::string mode = params.getString("mode", "sea");
   if (mode == "sea")
     return PlannerMode::Sea;
   if (mode != "paper")
     throw std::invalid_argument(algorithm + ": mode must be sea or paper, not '" + mode + "'");
-  if (!has_paper)
-    throw std::invalid_argument(algorithm + ": mode paper is not available yet (only sea)");
   return PlannerMode::Paper;
 }
 

@@ -16,7 +16,8 @@ TargetRisk RiskAssessor::assess(const ShipState& own, const ShipState& target) {
   r.geometry = classifyEncounter(own, target, r.cpa, cfg_.colregs);
   r.true_bearing = wrapTwoPi(r.geometry.relative_bearing + own.heading);
   r.cri = computeCri(own, target, r.cpa, cfg_.cri, r.geometry.relative_bearing);
-  r.compliance = monitor_.update(target.id, r.cpa.tcpa, r.cpa.dcpa);
+  const bool gives_way = r.geometry.role == OwnRole::StandOn || r.geometry.role == OwnRole::BothGiveWay;
+  r.compliance = monitor_.update(target.id, r.cpa.tcpa, r.cpa.dcpa, gives_way);
   r.rule = r.compliance.decision == RuleDecision::Rule2 ? 2 : applicableRule(r.geometry.encounter);
   return r;
 }

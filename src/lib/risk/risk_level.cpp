@@ -59,14 +59,15 @@ ComplianceMonitor::ComplianceMonitor(const HuRiskConfig& cfg) : cfg_(cfg) {
   cfg_.validate();
 }
 
-ComplianceResult ComplianceMonitor::update(const std::string& target_id, double tcpa, double dcpa) {
+ComplianceResult ComplianceMonitor::update(const std::string& target_id, double tcpa, double dcpa,
+                                           bool target_gives_way) {
   State& s = state_[target_id];
   ComplianceResult out;
   out.risk = riskLevel(tcpa, dcpa, cfg_);
   switch (out.risk) {
     case RiskLevel::Urgent:
       if (s.risk == RiskLevel::Collision)
-        out.compliant = false;  // Algorithm 1, lines 10-11
+        out.compliant = !target_gives_way;  // Algorithm 1, lines 10-11, for a give-way target
       else if (s.risk == RiskLevel::None)
         out.compliant = true;  // lines 8-9
       else

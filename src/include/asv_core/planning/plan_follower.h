@@ -46,6 +46,11 @@ struct PlanFollowerConfig {
   // lost, and only while it still passes the last known targets; our choice: a minute, within which a
   // ship at 12 kn sails 370 m and a crossing target's position estimate is still a few hundred metres good
   double degraded_plan_hold = 60.0;
+  // A target's rising risk level replans (Hu et al. 2017: the path is re-planned as the risk is
+  // assessed). false: only a plan predicted unsafe, one that reaches land or one that is not Ok
+  // replans, so a trajectory computed once with every target in view is sailed as computed (the
+  // experiments of Lazarowska 2015 and Wu et al. 2022 plan once per encounter).
+  bool replan_on_risk = true;
   double risk_clear_time = 60.0;       // [s] a target's risk must stay none, with its CPA past, this
                                        // long before a new rise replans again (tracking noise flickers
                                        // round thresholds; a plan that works lowers the risk)
@@ -73,6 +78,14 @@ struct PlanFollowerConfig {
 Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries = 3);
 bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
+
+// Paper mode (plannerMode, planning.h) runs the method as published: the shared rules above, the
+// follower's stand-on policy and its minimum separation are this stack's sea extensions, so they are
+// off. applyPlannerMode sets the follower for the mode; planInMode asks the planner under the shared
+// rules at sea and alone in paper mode.
+void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode);
+Plan planInMode(const std::function<Plan(const PlanningProblem&)>& make, const PlanningProblem& problem,
+                PlannerMode mode);
 
 // Whether a plan may use tracked targets that no risk assessment covers (risk-blind: no encounter, no
 // role, so the own ship could give way to a ship it must stand on for). Only when the risk picture has

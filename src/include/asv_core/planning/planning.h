@@ -128,10 +128,9 @@ struct Plan {
 
 // A planner's mode, key `mode`: `sea` (default), the published method with the stack's named extensions
 // for use at sea; `paper`, the method as published, those extensions off (each algorithm's config lists
-// them). Throws std::invalid_argument on another value, or on `paper` when `has_paper` is false (an
-// algorithm whose paper mode is not built yet says so rather than run something else).
+// them). Throws std::invalid_argument on another value.
 enum class PlannerMode { Sea, Paper };
-PlannerMode plannerMode(const ParamMap& params, const std::string& algorithm, bool has_paper = true);
+PlannerMode plannerMode(const ParamMap& params, const std::string& algorithm);
 
 // The area round a target that a planner keeps the own ship out of, at the problem's time (for display).
 struct TargetDomain {

@@ -44,13 +44,16 @@ struct ComplianceResult {
 RuleDecision ruleDecision(RiskLevel risk, bool compliant);
 
 // Algorithm 1, per target: keeps each target's previous risk level. Risk 2 reached straight after
-// risk 1 flags the target non-compliant (it was required to act and did not); risk 2 from 0 stays
-// compliant (it appeared suddenly). Algorithm 1 does not say what risk 2 after risk 2 gives: the flag
+// risk 1 flags the target non-compliant when it was required to act as a give-way vessel (Hu et al.
+// 2017, Sec. 2.1: "required to manoeuvre but did not ... as a give-way vessel"): the own ship stands
+// on for it, or both give way (Rule 14). A target the own ship must keep out of the way of is not
+// flagged: the urgency is then the own ship's doing. Risk 2 from 0 stays compliant (it appeared
+// suddenly). Algorithm 1 does not say what risk 2 after risk 2 gives: the flag
 // is kept, since nothing has changed that could clear it. Risk 0 or 1 returns Flag = Compliant.
 class ComplianceMonitor {
 public:
   explicit ComplianceMonitor(const HuRiskConfig& cfg = {});
-  ComplianceResult update(const std::string& target_id, double tcpa, double dcpa);
+  ComplianceResult update(const std::string& target_id, double tcpa, double dcpa, bool target_gives_way);
   void forget(const std::string& target_id) { state_.erase(target_id); }
   void clear() { state_.clear(); }
   // Drops the history of every target not in `ids` (tracks that were lost).

@@ -78,8 +78,8 @@ ParamMap DssaConfig::seaDefaults() {
 }
 
 DssaConfig DssaConfig::fromParams(const ParamMap& params) {
-  plannerMode(params, "dssa", false);  // sea only so far
-  DssaConfig c = preset(params.getString("preset", "dssa"));
+  const bool paper = plannerMode(params, "dssa") == PlannerMode::Paper;
+  DssaConfig c = preset(params.getString("preset", "dssa"), paper);
   c.speed_changes = params.getBool("speed_changes", c.speed_changes);
   c.colregs = params.getBool("colregs", c.colregs);
   c.alpha = params.getDouble("alpha", c.alpha);
@@ -103,7 +103,7 @@ DssaConfig DssaConfig::fromParams(const ParamMap& params) {
   return c;
 }
 
-DssaConfig DssaConfig::preset(const std::string& name) {
+DssaConfig DssaConfig::preset(const std::string& name, bool paper) {
   DssaConfig c;
   if (name == "dssa") {
     c.speed_changes = false;
@@ -111,8 +111,8 @@ DssaConfig DssaConfig::preset(const std::string& name) {
     c.beta = 0.0;
   } else if (name == "dssa_plus_sc") {  // s>c: alpha 10 times beta (Sec. 5)
     c.speed_changes = true;
-    c.alpha = 1.0;
-    c.beta = 0.1;
+    c.alpha = paper ? 10.0 : 1.0;
+    c.beta = paper ? 1.0 : 0.1;
   } else if (name == "dssa_plus_cs") {  // s<c: alpha 10 times lower than beta
     c.speed_changes = true;
     c.alpha = 1.0;

@@ -64,9 +64,14 @@ void MopsoConfig::validate() const {
   require(finitePositive(min_speed_mps), "min_speed_mps must be > 0 m/s");
 }
 
-MopsoConfig MopsoConfig::fromParams(const ParamMap& p) {
-  plannerMode(p, "mopso", false);  // sea only so far
+MopsoConfig MopsoConfig::paper() {
   MopsoConfig c;
+  c.inflate = false;
+  return c;
+}
+
+MopsoConfig MopsoConfig::fromParams(const ParamMap& p) {
+  MopsoConfig c = plannerMode(p, "mopso") == PlannerMode::Paper ? paper() : MopsoConfig{};
   c.particles = p.getInt("particles", c.particles);
   c.generations = p.getInt("generations", c.generations);
   c.repository_size = p.getInt("repository_size", c.repository_size);
@@ -85,6 +90,7 @@ MopsoConfig MopsoConfig::fromParams(const ParamMap& p) {
   c.t_min_s = p.getDouble("t_min_s", c.t_min_s);
   c.t_max_s = p.getDouble("t_max_s", c.t_max_s);
   c.prefer_starboard = p.getBool("prefer_starboard", c.prefer_starboard);
+  c.inflate = p.getBool("inflate", c.inflate);
   c.land_clearance_m = p.getDouble("land_clearance_m", c.land_clearance_m);
   c.selection_margin_m = p.getDouble("selection_margin_m", c.selection_margin_m);
   c.min_speed_mps = p.getDouble("min_speed_mps", c.min_speed_mps);
@@ -588,6 +594,42 @@ int selectFromFront(const std::vector<MopsoSolution>& front, const MopsoConfig& 
   return best_margin >= 0 ? best_margin : safest;
 }
 
+// Rule 17(c): a stand-on ship that must act (here Rule 2(b) against a give-way target that did not)
+// shall not, if the circumstances admit, alter to port for a vessel on her own port side. When the
+// starboard pass found nothing that keeps d_min and the Rule 2(b) target is on the port side, the
+// starboard solution of that pass that passes every target farthest is kept, provided it keeps the
+// situation's minimum separation (d_safe without one); only when none does may the port pass run
+// (Rule 17(b): whatever best aids to avoid collision). Returns its index in `front`, or -1.
+namespace {
+int rule17cStarboard(const PlanningProblem& problem, const RuleSelection& rule, const MopsoContext& ctx,
+                     const MopsoConfig& cfg, const std::vector<MopsoSolution>& front) {
+  if (rule.action != HuAction::Rule2Evade || rule.target < 0)
+    return -1;
+  const PlannerTarget& t = problem.targets[static_cast<size_t>(rule.target)];
+  const double relative = wrapTwoPi(courseOf(t.state.position - problem.own.position) - problem.own.course);
+  if (relative <= kPi)
+    return -1;  // not on the port side
+  const double keep = problem.min_separation > 0.0 ? problem.min_separation : HuRiskConfig{}.d_safe_m;
+  int best = -1;
+  double best_dcpa = keep;
+  for (size_t k = 0; k < front.size(); ++k) {
+    const MopsoSolution& s = front[k];
+    if (s.alteration <= 0.0)
+      continue;
+    const EvasionPath path =
+        evasionPath(ctx.a, ctx.own_course, ctx.speed, ctx.c, ctx.course_after_c, s.alteration, s.duration);
+    double dcpa = std::numeric_limits<double>::infinity();
+    for (const PlannerTarget& o : problem.targets)
+      dcpa = std::min(dcpa, pathCpa(path, o.state, cfg.cpa_horizon_s).dcpa);
+    if (dcpa >= best_dcpa) {
+      best_dcpa = dcpa;
+      best = static_cast<int>(k);
+    }
+  }
+  return best;
+}
+}  // namespace
+
 // ------------------------------------------------------------------------------------------------
 // Planner
 
@@ -720,7 +762,8 @@ std::vector<MopsoSolution> MopsoPlanner::optimise(const MopsoContext& ctx, const
 Plan MopsoPlanner::plan(const PlanningProblem& problem) {
   // d_min of eq. (8) is at least the situation's demanded passing distance (planning.h).
   MopsoConfig cfg = cfg_;
-  cfg.d_min_m = std::max(cfg.d_min_m, kSeparationMargin * std::max(0.0, problem.min_separation));
+  if (cfg.inflate)
+    cfg.d_min_m = std::max(cfg.d_min_m, kSeparationMargin * std::max(0.0, problem.min_separation));
   const Deadline deadline(problem.time_budget);
   last_ = MopsoResult{};
   Plan out;
@@ -755,13 +798,20 @@ Plan MopsoPlanner::plan(const PlanningProblem& problem) {
   last_.pareto_front = optimise(ctx, cfg, problem.seed, deadline, last_);
   int idx = selectFromFront(last_.pareto_front, cfg);
   if (idx < 0 && cfg.prefer_starboard) {
+    idx = rule17cStarboard(problem, rule, ctx, cfg, last_.pareto_front);
+    if (idx >= 0)
+      last_.pass = 3;
+  }
+  if (idx < 0 && cfg.prefer_starboard) {
     // Section 2.3: no feasible starboard manoeuvre, so (6) is relaxed and port is allowed.
     ctx.impose_starboard = false;
     last_.pass = 2;
     last_.pareto_front = optimise(ctx, cfg, problem.seed ^ 0x9E3779B97F4A7C15ULL, deadline, last_);
     idx = selectFromFront(last_.pareto_front, cfg);
   }
-  bool feasible = idx >= 0;
+  bool feasible = idx >= 0 && last_.pareto_front[idx].eval.feasible();
+  if (last_.pass == 3)
+    feasible = true;  // inside d_min by Rule 17(c)'s choice, outside the minimum separation
   if (!feasible && !last_.pareto_front.empty())
     idx = 0;  // least violation: the archive holds only the least-violating solutions when none is feasible
   if (idx < 0) {
@@ -785,8 +835,13 @@ Plan MopsoPlanner::plan(const PlanningProblem& problem) {
   m.precision(4);
   m << rule.reason << "; " << (s.alteration >= 0.0 ? "starboard " : "port ")
     << radToDeg(std::fabs(s.alteration)) << " deg for " << s.duration << " s (f " << s.f() << ", g " << s.g()
-    << " rad, h " << s.h() << " m); pass " << last_.pass
-    << (last_.pass == 1 ? " (eq. 6 imposed)" : " (eq. 6 relaxed)");
+    << " rad, h " << s.h() << " m); pass " << last_.pass;
+  if (last_.pass == 1)
+    m << " (eq. 6 imposed)";
+  else if (last_.pass == 3)
+    m << " (Rule 17(c): no turn to port for a ship on the port side)";
+  else
+    m << " (eq. 6 relaxed)";
   if (!feasible)
     m << "; no feasible solution, least-violation plan (violation " << s.eval.violation << ")";
   out.message = m.str();

@@ -91,7 +91,8 @@ struct DssaConfig {
   // Throws std::invalid_argument naming the first bad field.
   void validate() const;
 
-  // Keys (SI, angles in degrees at this edge): preset (applied first), speed_changes, alpha, beta, p,
+  // Keys (SI, angles in degrees at this edge): mode (sea | paper: the preset's weight scale, see
+  // preset()), preset (applied first), speed_changes, alpha, beta, p,
   // time_window, time_step, detection_range, collision_distance, tcpa_floor, course_change_max_deg,
   // course_change_step_deg, speed_change_max, speed_change_step, max_rounds, max_search_time,
   // ref_speed, max_speed_over_ref. Unknown keys are rejected; the result is validated.
@@ -99,7 +100,7 @@ struct DssaConfig {
   // fromParams with `preset` as the preset unless the parameters name one: how a planner named
   // "dssa" or "dssa_plus" reads its parameters (DssaPlanner, and the ROS agents from the plugin's).
   static DssaConfig fromParams(ParamMap params, const std::string& preset);
-  // The sea-scale defaults every ROS and batch run starts from (the paper's values are in its own
+  // The sea-scale defaults every ROS and batch run in sea mode starts from (the paper's values are in its own
   // units: an 800 x 800 area, TimeWindow 20, detection range 500): a 10-minute window, intentions
   // exchanged within 6 nm, "collide" below 0.5 nm, a 10 s search step, speed changes of up to 4 m/s
   // (about 8 kn) in 1 m/s steps. Our choice; docs/results/dssa.md.
@@ -114,8 +115,12 @@ struct DssaConfig {
   //   "dssa_plus_eq"  DSSA+ s=c: alpha = beta = 1;
   //   "dssa_plus"     alias of dssa_plus_eq, the planner plugin's default (the only variant without
   //                   a weak spot in the paper's tables).
+  // The paper gives only the ratios. `paper` (mode paper) reads them with the smaller weight 1, as the
+  // text states them ("alpha 10 times higher than beta"): s>c is alpha 10, beta 1. Sea mode keeps
+  // alpha = 1 throughout, so that a predicted collision (CR >= 1) always outweighs a 45 deg turn
+  // (EF 0.25). Our choice; docs/results/dssa.md shows how the outcome depends on this scale.
   // Throws std::invalid_argument for any other name.
-  static DssaConfig preset(const std::string& name);
+  static DssaConfig preset(const std::string& name, bool paper = false);
   static std::vector<std::string> presetNames();
 };
 

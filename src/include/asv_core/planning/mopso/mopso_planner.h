@@ -62,6 +62,9 @@ struct MopsoConfig {
   double t_max_s = 1800.0;  // [s] t_max of eq. (5); not given: 30 min, enough to open 1 nm at 15 deg
                             // and 8 kn, short enough to keep near the planned route
   bool prefer_starboard = true;     // impose eq. (6) in a first pass, relax it only if that finds nothing
+  // Sea-mode extension (not in the paper): d_min of eq. (8) is raised to kSeparationMargin x the
+  // situation's minimum separation (planning.h) when that is larger. Paper mode: false, d_min as set.
+  bool inflate = true;
   double land_clearance_m = 185.2;  // [m] a leg must keep this far from every static polygon (Fig. 4(b));
                                     // not given: 0.1 nm
   // [m] selection rule: among the feasible Pareto solutions with f <= -margin (DCPA >= d_min + margin)
@@ -72,7 +75,10 @@ struct MopsoConfig {
                                // timed at OwnShipLimits::max_speed
 
   void validate() const;  // throws std::invalid_argument naming the bad field
-  // Reads the keys above (absent keys keep the defaults); rejects unknown keys.
+  // Hu et al. (2017) and nothing else: the sea-mode extensions above off (`inflate`).
+  static MopsoConfig paper();
+  // Reads the keys above and `mode` (sea | paper: which defaults the others start from); absent keys
+  // keep the defaults; rejects unknown keys.
   static MopsoConfig fromParams(const ParamMap& params);
 };
 
@@ -239,7 +245,8 @@ struct MopsoResult {
   RuleSelection rule;
   std::vector<MopsoSolution> pareto_front;  // archive of the last pass (feasible ones first if any)
   int chosen = -1;                          // index into pareto_front, -1 when no plan was optimised
-  int pass = 0;                             // 1: eq. (6) imposed; 2: relaxed; 0: no optimisation
+  // 1: eq. (6) imposed; 2: relaxed; 3: Rule 17(c) kept a starboard plan inside d_min; 0: no optimisation
+  int pass = 0;
   int generations_run = 0;                  // over both passes
   long evaluations = 0;
 };

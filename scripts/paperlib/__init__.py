@@ -1,0 +1,1 @@
+"""Reproductions of the four papers' experiments through asv_batch (scripts/papers.py)."""
