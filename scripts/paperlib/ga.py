@@ -21,12 +21,13 @@ CRI_AT = [("head-on TS1", "ts1", 330.0, 0.62), ("head-on TS1", "ts1", 426.0, 0.4
 # Bands: steering, the spread of the paper's own three answers (28.5-33.0 deg); distances, half the
 # ASV's length; CRI, the paper's "similar CRI" margin.
 ANGLE_BAND, DIST_BAND, CRI_BAND = 5.0, 20.0, 0.05
-_EARLY = ("the CRI scaled to the 40.3 m ASV (wu_port's planner_params, attention range 12 nm unscaled) is 0.76 "
-          "already at t = 0 with TS1 2.9 km ahead on a collision course, so the GA decides at once, not at the "
-          "paper's 330 s at 400 m. Paper mode's objective is the CRI alone: the heading of least CRI is a turn "
-          "of about 90 deg that opens every DCPA, so the ship weaves between +-90 deg far from every target and "
-          "does not reach its goal in the run. The paper gives no positions or speeds, and its CRI of 0.62 at "
-          "400 m implies a scaling we cannot recover from the text")
+_EARLY = ("the CRI scaled to the 40.3 m ASV (wu_port's planner_params; the attention range of eq. 3 is 12 nm, "
+          "unscaled) is above 0.61 for every target already at the start, about 3 km away on collision courses, "
+          "so the GA decides at once, not at the paper's 330 s at 400 m. Paper mode's objective is the CRI alone: "
+          "the heading of least CRI is a turn of about 90 deg that opens every DCPA; afterwards no CRI passes "
+          "0.61 again, the paper's decisions at 330, 447 and 800 s never happen and every target passes wider "
+          "than in the paper. The paper gives no positions or speeds, and its CRI of 0.62 at 400 m implies a "
+          "scaling we cannot recover from the text")
 REASONS = {"head-on TS1": _EARLY, "crossing TS2 + TS3": _EARLY, "overtaking TS4": _EARLY}
 
 

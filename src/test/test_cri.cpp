@@ -56,6 +56,26 @@ TEST(CriMembership, BearingPeaksAt19AndVanishesAt199) {
   EXPECT_GT(criUBearing(degToRad(60.0), cfg), criUBearing(degToRad(300.0), cfg));
 }
 
+// Wu et al. (2022) eq. (3) and (4) exactly as printed (CriConfig::as_printed, the GA's paper mode), by
+// hand: beyond D1, t1 = (D - DCPA) / V_r = (8000 - 3000) / 10 = 500 s; U_B = 0.5 (cos(theta - 19 deg) +
+// sqrt(C_B + cos^2)) with C_B = 440/289: 0.5 (1 + 1.58823...) = 1.29412 at 19 deg, 0.5 (-1 + 1.58823)
+// = 0.29412 at 199 deg, 0.5 sqrt(440/289) = 0.61695 at 109 deg.
+TEST(CriMembership, Eq3And4AsPrinted) {
+  CriConfig cfg;
+  cfg.as_printed = true;
+  double t1, t2;
+  criTcpaBreakpoints(3000.0, 8000.0, 10.0, cfg, t1, t2);
+  EXPECT_NEAR(t1, 500.0, 1e-9);
+  criTcpaBreakpoints(0.0, 5000.0, 10.0, cfg, t1, t2);  // inside D1 both forms agree
+  EXPECT_NEAR(t1, 185.2, 1e-9);
+  const double root = std::sqrt(440.0 / 289.0 + 1.0);
+  EXPECT_NEAR(root, 1.588235, 1e-6);
+  EXPECT_NEAR(criUBearing(degToRad(19.0), cfg), 0.5 * (1.0 + root), 1e-12);
+  EXPECT_NEAR(criUBearing(degToRad(199.0), cfg), 0.5 * (root - 1.0), 1e-12);
+  EXPECT_NEAR(criUBearing(degToRad(109.0), cfg), 0.5 * std::sqrt(440.0 / 289.0), 1e-12);
+  EXPECT_NEAR(criUBearing(degToRad(19.0), cfg), 1.294118, 1e-6);
+}
+
 TEST(CriMembership, DistanceAndSpeedRatio) {
   CriConfig cfg;
   cfg.dlma_m = 1000.0;

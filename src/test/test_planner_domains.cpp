@@ -87,6 +87,8 @@ TEST(PlannerModes, PaperModeIsThePublishedMethod) {
   EXPECT_EQ(ga.elite_count, 0);
   EXPECT_EQ(ga.safety_penalty + ga.colregs_penalty + ga.new_risk_penalty + ga.turn_penalty, 0.0);
   EXPECT_EQ(asv::GaConfig::fromParams({}).elite_count, 1);  // sea, the default
+  EXPECT_TRUE(ga.cri.as_printed);  // eq. (3) and (4) as printed
+  EXPECT_FALSE(asv::GaConfig::fromParams({}).cri.as_printed);
 
   asv::ParamMap other;
   other.set("mode", "harbour");

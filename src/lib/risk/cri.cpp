@@ -63,9 +63,10 @@ void criTcpaBreakpoints(double dcpa, double range, double relative_speed, const 
   }
   // Eq. (3) prints t1 = (D - DCPA) / V_r for DCPA > D1, which makes U_TCPA jump from 0 to a large
   // value as the DCPA crosses D1 (a target passing wider would look more dangerous). The source of the
-  // model (Zheng's fuzzy CRI) has (D1 - DCPA) / V_r, continuous at DCPA = D1: we follow that.
-  (void)range;
-  t1 = dcpa <= D1 ? std::sqrt(D1 * D1 - dcpa * dcpa) / relative_speed : (D1 - dcpa) / relative_speed;
+  // model (Zheng's fuzzy CRI) has (D1 - DCPA) / V_r, continuous at DCPA = D1: we follow that, unless
+  // the configuration asks for the printed form.
+  const double beyond = cfg.as_printed ? range : D1;
+  t1 = dcpa <= D1 ? std::sqrt(D1 * D1 - dcpa * dcpa) / relative_speed : (beyond - dcpa) / relative_speed;
   t2 = dcpa <= R ? std::sqrt(R * R - dcpa * dcpa) / relative_speed : 0.0;
 }
 
@@ -74,8 +75,11 @@ double criUBearing(double relative_bearing, const CriConfig& cfg) {
   // U_B = 1 at 19 deg and 0 at 199 deg, so subtract the minimum (= 5/17 for the classic C_B = 440/289,
   // the form of Zheng's original membership function).
   const double c = std::cos(relative_bearing - degToRad(cfg.peak_bearing_deg));
+  const double printed = 0.5 * (c + std::sqrt(cfg.arena_cb + c * c));
+  if (cfg.as_printed)
+    return printed;
   const double offset = 0.5 * (std::sqrt(cfg.arena_cb + 1.0) - 1.0);
-  return std::clamp(0.5 * (c + std::sqrt(cfg.arena_cb + c * c)) - offset, 0.0, 1.0);
+  return std::clamp(printed - offset, 0.0, 1.0);
 }
 
 double criUDistance(double range, const CriConfig& cfg) {

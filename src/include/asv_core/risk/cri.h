@@ -30,6 +30,10 @@ struct CriConfig {
   double peak_bearing_deg = 19.0;
   // Fig. 3: with TCPA < 0 the ships have passed and no action is needed; CRI is then 0.
   bool zero_when_diverging = true;
+  // Eq. (3) and (4) exactly as Wu et al. (2022) print them (the GA's paper mode): t1 = (D - DCPA) / V_r
+  // for DCPA > D1, and U_B without the shift that maps it onto [0, 1] (it then spans [0.29, 1.29] for
+  // the classic C_B, so the CRI can exceed 1 by up to 0.01). false: both corrected, see cri.cpp.
+  bool as_printed = false;
   SafeEncounterConfig safe_encounter;
   void validate() const;
 };
@@ -42,7 +46,7 @@ struct CriResult {
   double speed_ratio = 0.0;                                            // K = V_T / V_O
 };
 
-// Membership functions, each in [0, 1].
+// Membership functions, each in [0, 1] (U_B up to 1.29 with as_printed).
 double criUDcpa(double dcpa, double d1, double d2);                 // eq. (2)
 double criUTcpa(double tcpa, double t1, double t2);                 // eq. (3)
 double criUBearing(double relative_bearing, const CriConfig& cfg);  // eq. (4), bearing in rad

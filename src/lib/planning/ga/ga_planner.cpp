@@ -52,6 +52,7 @@ GaConfig GaConfig::paper() {
   GaConfig c;
   c.elite_count = 0;
   c.safety_penalty = c.colregs_penalty = c.new_risk_penalty = c.turn_penalty = 0.0;
+  c.cri.as_printed = true;
   return c;
 }
 
@@ -84,6 +85,7 @@ GaConfig GaConfig::fromParams(const ParamMap& p) {
   r.arena_cb = p.getDouble("cri/arena_cb", r.arena_cb);
   r.peak_bearing_deg = p.getDouble("cri/peak_bearing_deg", r.peak_bearing_deg);
   r.zero_when_diverging = p.getBool("cri/zero_when_diverging", r.zero_when_diverging);
+  r.as_printed = p.getBool("cri/as_printed", r.as_printed);
   r.safe_encounter.domain_unit_m = p.getDouble("cri/domain_unit_m", r.safe_encounter.domain_unit_m);
   r.safe_encounter.turn90_time_s = p.getDouble("cri/turn90_time_s", r.safe_encounter.turn90_time_s);
   r.safe_encounter.advance_m = p.getDouble("cri/advance_m", r.safe_encounter.advance_m);
