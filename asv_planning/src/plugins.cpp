@@ -10,7 +10,8 @@ namespace asv_planning {
 
 void AlgorithmPlugin::initialize(const std::string& name, const asv::ParamMap& config) {
   // The sea-scale defaults belong to sea mode; paper mode runs the paper's own values and units.
-  asv::ParamMap merged = config.getString("mode", "sea") == "paper" ? asv::ParamMap{} : defaults_;
+  asv::ParamMap merged =
+      asv::plannerMode(config, algorithm_->name()) == asv::PlannerMode::Paper ? asv::ParamMap{} : defaults_;
   for (const auto& kv : config.values())
     merged.set(kv.first, kv.second);
   algorithm_->configure(merged);

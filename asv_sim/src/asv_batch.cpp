@@ -196,8 +196,8 @@ bool isDssa(const std::string& p) {
 asv::DssaConfig dssaConfig(const std::string& planner, const asv::ParamMap& scenario_params) {
   // The plugins' sea-scale defaults (sea mode only): the agents of the exchange negotiate like the plugin.
   const asv::ParamMap own = scenario_params.sub(planner);
-  asv::ParamMap p =
-      own.getString("mode", "sea") == "paper" ? asv::ParamMap{} : asv::DssaConfig::seaDefaults();
+  const bool paper = asv::plannerMode(own, planner) == asv::PlannerMode::Paper;
+  asv::ParamMap p = paper ? asv::ParamMap{} : asv::DssaConfig::seaDefaults();
   p.set("preset", planner);
   for (const auto& kv : own.values())
     p.set(kv.first, kv.second);
@@ -404,13 +404,12 @@ void BatchRun::writeRisk(double now, const std::vector<asv::PlannerTarget>& targ
   if (!risk_.is_open() || now < next_risk_ - 1e-9)
     return;
   next_risk_ += o_.sample_period;
-  static const char* kRoles[] = {"none", "give_way", "stand_on", "both_give_way"};
   const Eigen::Vector2d own = sim_.vessels()[0].position();
   char buf[256];
   for (const asv::PlannerTarget& t : targets) {
     std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.4f,%d,%d,%s\n", now, t.state.id.c_str(),
                   (t.state.position - own).norm(), t.tcpa, t.dcpa, t.cri, static_cast<int>(t.risk),
-                  t.compliant ? 1 : 0, kRoles[std::min<int>(static_cast<int>(t.role), 3)]);
+                  t.compliant ? 1 : 0, asv::toString(t.role));
     risk_ << buf;
   }
 }

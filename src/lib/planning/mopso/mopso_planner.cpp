@@ -606,8 +606,7 @@ int rule17cStarboard(const PlanningProblem& problem, const RuleSelection& rule, 
   if (rule.action != HuAction::Rule2Evade || rule.target < 0)
     return -1;
   const PlannerTarget& t = problem.targets[static_cast<size_t>(rule.target)];
-  const double relative = wrapTwoPi(courseOf(t.state.position - problem.own.position) - problem.own.course);
-  if (relative <= kPi)
+  if (relativeBearing(problem.own, t.state.position) <= kPi)
     return -1;  // not on the port side
   const double keep = problem.min_separation > 0.0 ? problem.min_separation : HuRiskConfig{}.d_safe_m;
   int best = -1;
