@@ -21,6 +21,11 @@ struct Script {
   Eigen::Vector2d tgt0{5000.0, 5000.0};
   double tgt_course_deg = 270.0, tgt_speed = 5.0;
   double duration = 2000.0;
+  struct Other {  // a further target (ts2, ts3, ...), holding course and speed
+    Eigen::Vector2d p0;
+    double course_deg, speed;
+  };
+  std::vector<Other> others;
 };
 
 double courseAt(const std::map<double, double>& sched, double t) {
@@ -37,29 +42,40 @@ RunRecorder record(const Script& s, const EvaluationConfig& cfg = {},
   info.planner = "test";
   info.seed = 7;
   info.ships = {{"own", std::nullopt, "test"}, {"ts1", std::nullopt, ""}};
+  std::vector<Script::Other> tgts{{s.tgt0, s.tgt_course_deg, s.tgt_speed}};
+  for (const auto& o : s.others) {
+    info.ships.push_back({"ts" + std::to_string(tgts.size() + 1), std::nullopt, ""});
+    tgts.push_back(o);
+  }
   info.origin = {54.0, 3.0};  // the open North Sea
   RunRecorder rec(cfg, info);
-  Eigen::Vector2d po = s.own0, pt = s.tgt0;
-  const double ct = degToRad(s.tgt_course_deg);
+  Eigen::Vector2d po = s.own0;
+  std::vector<Eigen::Vector2d> pt;
+  for (const auto& o : tgts)
+    pt.push_back(o.p0);
   for (int k = 0; k <= static_cast<int>(s.duration); ++k) {
     const double t = k;
     const double co = courseAt(s.own_course_deg, t);
-    ShipSample own, tgt;
-    own.name = "own";
-    own.state.position = po;
-    own.state.course = own.state.heading = co;
-    own.state.speed = s.own_speed;
-    own.course_setpoint = co;
-    tgt.name = "ts1";
-    tgt.state.position = pt;
-    tgt.state.course = tgt.state.heading = ct;
-    tgt.state.speed = s.tgt_speed;
-    rec.addSample(t, {own, tgt});
+    std::vector<ShipSample> ships(1 + tgts.size());
+    ships[0].name = "own";
+    ships[0].state.position = po;
+    ships[0].state.course = ships[0].state.heading = co;
+    ships[0].state.speed = s.own_speed;
+    ships[0].course_setpoint = co;
+    for (size_t n = 0; n < tgts.size(); ++n) {
+      ShipSample& tgt = ships[n + 1];
+      tgt.name = info.ships[n + 1].name;
+      tgt.state.position = pt[n];
+      tgt.state.course = tgt.state.heading = degToRad(tgts[n].course_deg);
+      tgt.state.speed = tgts[n].speed;
+    }
+    rec.addSample(t, ships);
     for (const auto& e : events)
       if (std::fabs(e.time - t) < 0.5)
         rec.addEvent(e);
     po += courseSpeedToVelocity(co, s.own_speed);
-    pt += courseSpeedToVelocity(ct, s.tgt_speed);
+    for (size_t n = 0; n < tgts.size(); ++n)
+      pt[n] += courseSpeedToVelocity(degToRad(tgts[n].course_deg), tgts[n].speed);
   }
   return rec;
 }
@@ -145,6 +161,48 @@ TEST(Evaluation, StandOnShipThatTurnsEarlyGetsTheRule17Penalty) {
   EXPECT_STREQ(roleName(t.role), "stand_on");
   EXPECT_TRUE(hasNote(t, "rule 17"));
   EXPECT_NEAR(t.score, 0.5, 1e-12);
+}
+
+TEST(Evaluation, StandOnAlterationWhileGivingWayToAnotherShipIsNoRule17Finding) {
+  // ts1 as in the test above: from port, (-5000, 5000) heading east, the own ship stands on; her
+  // 40 deg starboard turn at t = 10 s leaves it at DCPA 2394 m (safety 1). ts2 meets her head-on:
+  // (0, 12000) heading south at 5 m/s, TCPA 1200 s <= 1800 s, DCPA 0: both give way from t = 0. After the
+  // turn ts2 is at (0, 11900) relative, closing at (-3.214, -8.830): DCPA |11900 x 3.214| / 9.397 =
+  // 4070 m (safety 1); 40 deg >= 30 (Rule 8); at 11.9 km (Rule 16). So ts2 scores 1, and the turn
+  // taken while keeping out of ts2's way is no Rule 17 finding for ts1: 1, not 0.5.
+  Script s;
+  s.tgt0 = {-5000.0, 5000.0};
+  s.tgt_course_deg = 90.0;
+  s.others = {{{0.0, 12000.0}, 180.0, 5.0}};
+  s.own_course_deg = {{0.0, 0.0}, {10.0, 40.0}};
+  const RunResult r = record(s).finish();
+  ASSERT_EQ(r.own.targets.size(), 2u);
+  const TargetResult& t1 = r.own.targets[0];
+  const TargetResult& t2 = r.own.targets[1];
+  EXPECT_EQ(t1.encounter, Encounter::CrossingStandOn);
+  EXPECT_EQ(t2.encounter, Encounter::HeadOn);
+  EXPECT_FALSE(hasNote(t1, "rule 17:"));
+  EXPECT_TRUE(hasNote(
+      t1, "rule 17 not applied: the stand-on ship altered at t=10 s while keeping out of the way of ts2"));
+  EXPECT_TRUE(t1.colregs_ok);
+  EXPECT_DOUBLE_EQ(t1.score, 1.0);
+  EXPECT_TRUE(t2.colregs_ok);
+  EXPECT_DOUBLE_EQ(t2.score, 1.0);
+  EXPECT_DOUBLE_EQ(r.own.colregs_score, 1.0);
+}
+
+TEST(Evaluation, AnotherShipWithoutRiskDoesNotExcuseAnEarlyStandOnAlteration) {
+  // The same turn, but ts2 sails north 12 km ahead at the own ship's speed: no relative motion, no risk,
+  // no duty. ts1's finding stands: 0.5, as with ts1 alone.
+  Script s;
+  s.tgt0 = {-5000.0, 5000.0};
+  s.tgt_course_deg = 90.0;
+  s.others = {{{0.0, 12000.0}, 0.0, 5.0}};
+  s.own_course_deg = {{0.0, 0.0}, {10.0, 40.0}};
+  const RunResult r = record(s).finish();
+  const TargetResult& t1 = r.own.targets.at(0);
+  EXPECT_TRUE(hasNote(t1, "rule 17: the stand-on ship altered"));
+  EXPECT_NEAR(t1.score, 0.5, 1e-12);
 }
 
 TEST(Evaluation, StandOnShipThatHoldsCourseAndSpeedIsNotPenalised) {

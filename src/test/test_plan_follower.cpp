@@ -565,3 +565,58 @@ TEST(PlanFollower, DegradedDropsAPlanThatNoLongerPassesTheLastPicture) {
       }(),
       std::invalid_argument);
 }
+
+// The preferred passing distance (kPreferredSeparation x min_separation, planning.h): in open water the
+// planner is asked for it first, and its plan is kept when it is Ok and keeps the ship's way. A head-on
+// target 10 km ahead; the fake planner's plan turns due east at `speed` (the target, on x = 0, never
+// comes within 9 km of that track: every rule kept).
+TEST(PlanUnderSharedRules, OpenWaterAsksForThePreferredDistanceFirst) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {0.0, 20000.0};
+  pr.min_separation = 926.0;
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.state.position = {0.0, 10000.0};
+  t.state.course = t.state.heading = asv::degToRad(180.0);
+  t.state.speed = 6.0;
+  t.encounter = asv::Encounter::HeadOn;
+  t.role = asv::OwnRole::BothGiveWay;
+  pr.targets = {t};
+  std::vector<double> asked;
+  double wide_speed = 6.0;
+  auto east = [&](const asv::PlanningProblem& q) {
+    asked.push_back(q.min_separation);
+    const double v = q.min_separation > 926.0 ? wide_speed : 6.0;
+    asv::Plan p;
+    p.status = asv::PlanStatus::Ok;
+    p.course_setpoint = asv::degToRad(90.0);
+    p.speed_setpoint = v;
+    p.waypoints = {{{0.0, 0.0}, 0.0, asv::degToRad(90.0), v}, {{12000.0, 0.0}, 12000.0 / v, asv::degToRad(90.0), v}};
+    return p;
+  };
+  // Open water: one call, for 2 x 926 m; its plan is the answer.
+  asv::Plan p = asv::planUnderSharedRules(east, pr);
+  EXPECT_EQ(asked, (std::vector<double>{1852.0}));
+  EXPECT_EQ(p.speed_setpoint, 6.0);
+  // A wide plan at under half the planned speed (2.9 < 3 m/s) does not keep the ship's way: the plan for
+  // the minimum is asked for and taken.
+  asked.clear();
+  wide_speed = 2.9;
+  p = asv::planUnderSharedRules(east, pr);
+  EXPECT_EQ(asked, (std::vector<double>{1852.0, 926.0}));
+  EXPECT_EQ(p.speed_setpoint, 6.0);
+  wide_speed = 3.0;  // half the speed exactly still keeps it
+  asked.clear();
+  EXPECT_EQ(asv::planUnderSharedRules(east, pr).speed_setpoint, 3.0);
+  // Land 1 km ahead (within 1 nm): no open water, the minimum only.
+  asked.clear();
+  pr.obstacles = {island()};
+  p = asv::planUnderSharedRules(east, pr);
+  EXPECT_EQ(asked, (std::vector<double>{926.0}));
+  // The island moved to 1852 m (1 nm) ahead: open water again.
+  pr.obstacles = {{"island", {{-1000.0, 1852.0}, {1000.0, 1852.0}, {1000.0, 3000.0}, {-1000.0, 3000.0}}}};
+  asked.clear();
+  asv::planUnderSharedRules(east, pr);
+  EXPECT_EQ(asked, (std::vector<double>{1852.0}));
+}

@@ -91,7 +91,7 @@ TEST(SafetyNet, AStraightOnPlanIntoAHeadOnShipIsReplacedByAStarboardManoeuvre) {
   EXPECT_NEAR(planSeparation(straightOn(pr), pr), 0.0, 60.0);  // they meet at 4 km: 0 m, by 5 s samples
   int calls = 0;
   const Plan p = planUnderSharedRules([&](const PlanningProblem& q) { return ++calls, straightOn(q); }, pr);
-  EXPECT_EQ(calls, 4);  // the first plan and three retries, all straight on
+  EXPECT_EQ(calls, 5);  // the preferred distance (open water), the first plan and three retries, all straight on
   EXPECT_EQ(p.status, PlanStatus::Ok);
   EXPECT_NE(p.message.find("separation manoeuvre"), std::string::npos) << p.message;
   // The first preference: 30 deg to starboard (Rule 14, readily apparent by Rule 8), at full speed.

@@ -678,15 +678,30 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
   }
 }
 
-// The stand-on ship: Rule 17 (no action before the give-way ship's is clearly lacking; not to port for
-// a ship on the port side).
-void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor) const {
+// The stand-on ship: Rule 17 (no action before the give-way ship's action is clearly lacking; not to
+// port for a ship on the port side). An early action taken while the own ship had to keep out of the
+// way of another ship (`duties`) is not held against her: she cannot keep her course and speed for one
+// ship and keep out of the way of another, and the rules give way to the duty to keep out of the way
+// (Rules 16 and 17(d) state it for one pair; our reading for several, noted in the result). Rule 17(c)
+// still applies to that action.
+void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor,
+                               const std::vector<GiveWayDuty>& duties) const {
   const Instants& both = p.both;
   size_t ku = both.size();
   for (size_t k = p.ke; k < both.size() && ku == both.size(); ++k)
     if (p.cpas[k].tcpa >= 0.0 && riskLevel(p.cpas[k].tcpa, p.cpas[k].dcpa, cfg_.hu) == RiskLevel::Urgent)
       ku = k;
-  if (p.ka < both.size() && p.ka < ku) {
+  const bool early = p.ka < both.size() && p.ka < ku;
+  const GiveWayDuty* duty = nullptr;
+  for (const GiveWayDuty& d : duties)
+    if (early && d.target != r.name && d.from <= both[p.ka].first->t && both[p.ka].first->t <= d.to)
+      duty = duty ? duty : &d;
+  if (early && duty) {
+    r.notes.push_back(fmt("rule 17 not applied: the stand-on ship altered at t=%.0f s while keeping out of "
+                          "the way of ",
+                          both[p.ka].first->t) +
+                      duty->target + fmt(" (its passage t=%.0f-%.0f s)", duty->from, duty->to));
+  } else if (early) {
     const std::string urgent =
         ku < both.size() ? fmt("urgent only at t=%.0f s", both[ku].first->t) : std::string("never urgent");
     penalise(r, factor, cfg_.penalty_stand_on,
@@ -694,10 +709,11 @@ void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor
                  "give-way ship's action was clearly lacking (",
                  p.alter_deg, 100.0 * p.speed_drop, both[p.ka].first->t) +
                  urgent + ")");
-  } else if (p.ka < both.size() && p.port_dominant && p.g.encounter == Encounter::CrossingStandOn) {
+    return;
+  }
+  if (p.ka < both.size() && p.port_dominant && p.g.encounter == Encounter::CrossingStandOn)
     penalise(r, factor, cfg_.penalty_port,
              fmt("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(p.max_port)));
-  }
 }
 
 void RunRecorder::finishScore(TargetResult& r, double factor) const {
@@ -710,7 +726,39 @@ void RunRecorder::finishScore(TargetResult& r, double factor) const {
   }
 }
 
-TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
+// The entry into the rules: the first instant of a risk of collision (both.size() when none); cpas
+// gets the CPA of every instant.
+size_t RunRecorder::entryInstant(const Instants& both, std::vector<Cpa>& cpas) const {
+  cpas.resize(both.size());
+  size_t ke = both.size();
+  for (size_t k = 0; k < both.size(); ++k) {
+    cpas[k] = computeCpa(both[k].first->s, both[k].second->s);
+    const Cpa& c = cpas[k];
+    if (ke == both.size() && c.relative_motion && c.tcpa > 0.0 && c.tcpa <= cfg_.entry_tcpa_s &&
+        c.dcpa < cfg_.entry_dcpa_m && c.range <= cfg_.colregs.max_range_m)
+      ke = k;
+  }
+  return ke;
+}
+
+std::vector<RunRecorder::GiveWayDuty> RunRecorder::giveWayDuties(size_t i) const {
+  std::vector<GiveWayDuty> out;
+  for (size_t j = 0; j < tracks_.size(); ++j) {
+    if (j == i)
+      continue;
+    const Instants both = commonInstants(i, j);
+    std::vector<Cpa> cpas;
+    const size_t ke = entryInstant(both, cpas);
+    if (ke == both.size())
+      continue;
+    const Passage p = passage(both, cpas, ke);
+    if (p.g.role == OwnRole::GiveWay || p.g.role == OwnRole::BothGiveWay)
+      out.push_back({info_.ships[j].name, both[ke].first->t, both[p.kc].first->t});
+  }
+  return out;
+}
+
+TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const std::vector<GiveWayDuty>& duties) const {
   TargetResult r;
   r.name = info_.ships[j].name;
   r.min_distance = min_dist_[i][j] < kFar ? min_dist_[i][j] : kNaN;
@@ -729,16 +777,8 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
   const Cpa c0 = computeCpa(both.front().first->s, both.front().second->s);
   r.tcpa_at_start = c0.tcpa;
   r.dcpa_at_start = c0.dcpa;
-  // The entry into the rules (ke): the first instant of a risk of collision.
-  std::vector<Cpa> cpas(both.size());
-  size_t ke = both.size();
-  for (size_t k = 0; k < both.size(); ++k) {
-    cpas[k] = computeCpa(both[k].first->s, both[k].second->s);
-    const Cpa& c = cpas[k];
-    if (ke == both.size() && c.relative_motion && c.tcpa > 0.0 && c.tcpa <= cfg_.entry_tcpa_s &&
-        c.dcpa < cfg_.entry_dcpa_m && c.range <= cfg_.colregs.max_range_m)
-      ke = k;
-  }
+  std::vector<Cpa> cpas;
+  const size_t ke = entryInstant(both, cpas);
   if (ke == both.size()) {
     const EncounterGeometry g =
         classifyEncounter(both.front().first->s, both.front().second->s, c0, cfg_.colregs);
@@ -756,7 +796,7 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j) const {
   if (p.g.role == OwnRole::GiveWay || p.g.role == OwnRole::BothGiveWay)
     judgeGiveWay(p, r, factor);
   else if (p.g.role == OwnRole::StandOn)
-    judgeStandOn(p, r, factor);
+    judgeStandOn(p, r, factor, duties);
   finishScore(r, factor);
   return r;
 }
@@ -788,10 +828,11 @@ ShipResult RunRecorder::evaluateShip(size_t i) const {
   s.manoeuvres = manoeuvres(tr);
   double sum = 0.0, safety_sum = 0.0;
   int evaluated = 0;
+  const std::vector<GiveWayDuty> duties = giveWayDuties(i);
   for (size_t j = 0; j < tracks_.size(); ++j) {
     if (j == i || tracks_[j].points.empty())
       continue;
-    s.targets.push_back(evaluatePair(i, j));
+    s.targets.push_back(evaluatePair(i, j, duties));
     const TargetResult& t = s.targets.back();
     safety_sum += t.score;
     if (t.evaluated) {

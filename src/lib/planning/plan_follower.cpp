@@ -102,6 +102,18 @@ bool clearOfLand(const Plan& plan, const PlanningProblem& problem, double requir
 
 namespace {
 
+// The preferred passing distance is not worth the ship's way: a plan that slows her below half the
+// speed she plans for (the evaluator's apparent speed change, Rule 8) is not kept for it. Our choice.
+bool keepsWay(const Plan& plan, const PlanningProblem& problem) {
+  const double slowest = 0.5 * problem.own.speed;
+  if (plan.speed_setpoint < slowest)
+    return false;
+  for (size_t k = 1; k < plan.waypoints.size(); ++k)
+    if (plan.waypoints[k].speed < slowest)
+      return false;
+  return true;
+}
+
 // Why a plan breaks a shared rule, or "" when it keeps them all.
 struct RuleCheck {
   const PlanningProblem& problem;
@@ -162,9 +174,23 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
       landRequirement(problem.own.position, problem.goal, problem.obstacles, problem.min_obstacle_clearance);
   for (const auto& t : problem.targets)
     check.give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
-  Plan first = make(problem);
-  const std::string why = check.broken(first);
   const bool separation_net = problem.min_separation > 0.0 && !problem.targets.empty();
+  double preferred_time = 0.0;
+  // The preferred passing distance first, in open water (kOpenWater, planning.h): in a port or a
+  // channel the minimum separation is the standard, and the wider pass only costs time.
+  const double preferred = kPreferredSeparation * problem.min_separation;
+  const double open_water = std::max(preferred, kOpenWater);
+  if (separation_net && trackObstacleDistance({problem.own.position}, problem.obstacles) >= open_water) {
+    PlanningProblem wide = problem;
+    wide.min_separation = preferred;
+    Plan wide_plan = make(wide);
+    if (wide_plan.status == PlanStatus::Ok && keepsWay(wide_plan, problem) && check.broken(wide_plan).empty())
+      return wide_plan;
+    preferred_time = wide_plan.compute_time;
+  }
+  Plan first = make(problem);
+  first.compute_time += preferred_time;
+  const std::string why = check.broken(first);
   if (why.empty() && (first.status != PlanStatus::NoSolution || !separation_net))
     return first;
   if (first.status == PlanStatus::NoSolution) {  // the net instead of the follower's blind fallback

@@ -229,15 +229,24 @@ private:
   // entry into the rules to the closest approach (evaluation.cpp).
   using Instants = std::vector<std::pair<const Point*, const Point*>>;
   struct Passage;
+  // A ship that ship i had to keep out of the way of, from the entry into the rules to the closest
+  // approach [s].
+  struct GiveWayDuty {
+    std::string target;
+    double from, to;
+  };
   int index(const std::string& name) const;
   // Ship i's hull in sample s against every static obstacle: min_obstacle_, grounded_.
   void checkLand(size_t i, const ShipSample& s);
   ShipResult evaluateShip(size_t i) const;
-  TargetResult evaluatePair(size_t i, size_t j) const;
+  TargetResult evaluatePair(size_t i, size_t j, const std::vector<GiveWayDuty>& duties) const;
   Instants commonInstants(size_t i, size_t j) const;
+  size_t entryInstant(const Instants& both, std::vector<Cpa>& cpas) const;
+  std::vector<GiveWayDuty> giveWayDuties(size_t i) const;
   Passage passage(const Instants& both, const std::vector<Cpa>& cpas, size_t ke) const;
   void judgeGiveWay(const Passage& p, TargetResult& r, double& factor) const;
-  void judgeStandOn(const Passage& p, TargetResult& r, double& factor) const;
+  void judgeStandOn(const Passage& p, TargetResult& r, double& factor,
+                    const std::vector<GiveWayDuty>& duties) const;
   void finishScore(TargetResult& r, double factor) const;
   std::vector<Manoeuvre> manoeuvres(const Track& tr) const;
 

@@ -62,7 +62,9 @@ struct PlanFollowerConfig {
   static PlanFollowerConfig fromParams(const ParamMap& params);
 };
 
-// The rules every planner's plan must keep, whatever the algorithm; a plan that breaks one is refused
+// The planner is first asked for the preferred passing distance (kPreferredSeparation x min_separation,
+// planning.h); that plan is kept when it is Ok and keeps the rules below. Otherwise the problem as given
+// goes on as follows. The rules every planner's plan must keep, whatever the algorithm; a plan that breaks one is refused
 // and the planner asked again with another seed, up to `retries` times:
 //  - land: a plan whose track (landTrack) comes closer to a static obstacle than landRequirement()
 //    allows. If none keeps clear, the result is NoSolution (the follower's fallback, which stops

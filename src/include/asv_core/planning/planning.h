@@ -105,6 +105,15 @@ struct PlanningProblem {
 // Margin on PlanningProblem::min_separation: plans are made at kinematic constant-velocity prediction,
 // but the ship follows them with turn delays and the targets are tracked with noise. Our choice (10 %).
 constexpr double kSeparationMargin = 1.1;
+// Sea mode (planUnderSharedRules) asks the planner first, in open water, for a plan that passes every
+// target at this multiple of min_separation: the distance a watch officer prefers to the minimum she
+// accepts. It keeps that plan when it is Ok, keeps the ship's way and the shared rules; otherwise the
+// plan is made for min_separation itself. Our choice: 2, the preferred passing range of the
+// evaluator's safety score (r_pref = 2 r_min, docs/evaluation.md).
+constexpr double kPreferredSeparation = 2.0;
+// [m] Open water, for the preferred passing distance: no land within 1 nm of the own ship, nor within
+// that distance (our choice: a port basin or a channel is narrower).
+constexpr double kOpenWater = 1852.0;
 
 struct PlannedWaypoint {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] ENU
