@@ -44,16 +44,18 @@ asv::PlannerNodeConfig plannerConfig(const asv::ParamMap& params) {
 
 // The plan follower's settings. In lockstep a plan costs no simulated time: the budget only guards
 // against a plugin that never returns, and plugins that stop at their budget give the same plan on
-// any machine. Paper mode switches the follower's sea extensions off (applyPlannerMode).
+// any machine. Paper mode switches the follower's sea extensions off, and the replanning on rising risk of
+// a method that plans once (applyPlannerMode).
 asv::PlannerMode modeOf(const std::string& mode) {
   return mode == "paper" ? asv::PlannerMode::Paper : asv::PlannerMode::Sea;
 }
 
-asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool lockstep, const std::string& mode) {
+asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool lockstep,
+                                       const std::string& mode, const PlannerPlugin& plugin) {
   asv::PlanFollowerConfig fc = p.follower;
   if (lockstep)
     fc.time_budget = p.lockstep_time_budget;
-  asv::applyPlannerMode(fc, modeOf(mode));
+  asv::applyPlannerMode(fc, modeOf(mode), plugin.plansOnce());
   return fc;
 }
 
@@ -123,7 +125,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
              p.follower.cruise_speed, limits.max_speed);
     limits.max_speed = p.follower.cruise_speed;
   }
-  follower_config_ = followerConfig(p, lockstep_.enabled(), mode_);
+  follower_config_ = followerConfig(p, lockstep_.enabled(), mode_, *plugin_);
   follower_ = std::make_unique<asv::PlanFollower>(follower_config_);  // validates: throws on a bad value
   if (p.has_goal)
     follower_->setGoal(p.goal);
@@ -499,13 +501,14 @@ void PlannerNode::reconfigure(PlannerConfig& c, uint32_t /*level*/) {
   next.follower.stand_on_policy = c.stand_on_policy;
   next.planner = c.planner.empty() ? scenario_planner_ : c.planner;
   next.mode = c.mode;
-  asv::PlanFollowerConfig fc = followerConfig(next, lockstep_.enabled(), next.mode);
-  fc.cruise_speed = follower_->cruiseSpeed();
+  asv::PlanFollowerConfig fc;
   pluginlib::UniquePtr<PlannerPlugin> plugin;
-  try {
-    fc.validate();  // nothing changes unless the whole set is valid and the plugin loads
+  try {  // nothing changes unless the plugin loads and the whole set is valid
     if (next.planner != params_.planner || next.mode != mode_)
       plugin = loadPlugin(next.planner, next.mode);
+    fc = followerConfig(next, lockstep_.enabled(), next.mode, plugin ? *plugin : *plugin_);
+    fc.cruise_speed = follower_->cruiseSpeed();
+    fc.validate();
   } catch (const std::exception& e) {
     ROS_ERROR("planner_node: live parameters refused (%s); the values in force are kept", e.what());
     c = liveConfig();

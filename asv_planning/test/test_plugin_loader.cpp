@@ -124,3 +124,11 @@ TEST(PluginLoader, DomainsComeFromTheAlgorithm) {
     EXPECT_EQ(d[0].polygon.size(), n == "aco" ? 6u : 36u) << n;
   }
 }
+
+// asv_batch and planner_node set paper mode's follower from the plugin: only ACO (Lazarowska 2015)
+// plans once.
+TEST(PluginLoader, PlansOnceComesFromTheAlgorithm) {
+  PluginLoader loader;
+  for (const char* n : {"aco", "dssa", "dssa_plus", "mopso", "ga"})
+    EXPECT_EQ(loader.load(n, asv::ParamMap())->plansOnce(), std::string(n) == "aco") << n;
+}

@@ -352,7 +352,9 @@ void BatchRun::addPluginShips(asv_planning::PluginLoader& loader) {
     fc.cruise_speed = vs[i].cruise_speed;
     fc.min_separation = sc_.min_separation;
     const asv::PlannerMode mode = asv::plannerMode(sc_.planner_params.sub(p), p);
-    asv::applyPlannerMode(fc, mode);
+    auto plugin = loader.load(p, sc_.planner_params.sub(p));
+    // A method that plans once does so in paper mode, unless --follower names replan_on_risk itself.
+    asv::applyPlannerMode(fc, mode, plugin->plansOnce() && !o_.follower.has("replan_on_risk"));
     if (sc_.min_obstacle_clearance > 0.0)
       fc.min_obstacle_clearance_m = sc_.min_obstacle_clearance;  // the waters' own (a port)
     // The risk picture's CRI (--risk) uses the GA planner's own CRI scaling (Wu et al. 2022 eq. 1-12 as
@@ -360,8 +362,8 @@ void BatchRun::addPluginShips(asv_planning::PluginLoader& loader) {
     asv::RiskConfig rc;
     if (p == "ga")
       rc.cri = asv::GaConfig::fromParams(sc_.planner_params.sub("ga")).cri;
-    auto ps = std::make_unique<PluginShip>(PluginShip{i, p, mode, loader.load(p, sc_.planner_params.sub(p)),
-                                                      asv::PlanFollower(fc), asv::RiskAssessor(rc)});
+    auto ps = std::make_unique<PluginShip>(
+        PluginShip{i, p, mode, std::move(plugin), asv::PlanFollower(fc), asv::RiskAssessor(rc)});
     if (vs[i].goal)
       ps->follower.setGoal(*vs[i].goal);
     ps->follower.setObstacles(sc_.obstacles);

@@ -17,8 +17,6 @@ REPEAT_SEEDS = 100
 # Band on an alteration: half the smallest angle between two lattice legs (14.0 deg, aco.md), so that a
 # neighbouring lattice leg is outside.
 ANGLE_BAND = 7.0
-# The paper computes the trajectory once and sails it: no re-planning when a target's risk rises.
-PLAN_ONCE = ["replan_on_risk=false"]
 _STAIRCASE = ("paper mode sails the colony's best lattice path as found; on our construction graph (the paper's "
               "Fig. 6 is lost: rows 0.5 nm apart, legs 0, +-14, +-27, +-37 deg off the base line) that path is a "
               "staircase of short legs, where the paper's answer has two or three. Sea mode's waypoint reduction "
@@ -38,10 +36,9 @@ def jobs():
     out = []
     for scenario, _, _, _ in SITUATIONS:
         for mode in ("paper", "sea"):
-            out.append(Job("aco_%s_%s" % (scenario, mode), scenario, "aco", sets=["aco.mode=" + mode],
-                           follower=PLAN_ONCE if mode == "paper" else ()))
-        out.append(Job("aco_%s_repeat" % scenario, scenario, "aco", seeds=REPEAT_SEEDS,
-                       sets=["aco.mode=paper"], follower=PLAN_ONCE))
+            # Paper mode plans once, as the paper (AcoPlanner::plansOnce): no --follower key needed.
+            out.append(Job("aco_%s_%s" % (scenario, mode), scenario, "aco", sets=["aco.mode=" + mode]))
+        out.append(Job("aco_%s_repeat" % scenario, scenario, "aco", seeds=REPEAT_SEEDS, sets=["aco.mode=paper"]))
     return out
 
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "asv_core/eval/evaluation.h"
 #include "asv_core/papers/lazarowska_scenarios.h"
 #include "asv_core/planning/aco/aco_planner.h"
 #include "planner_target.h"
@@ -125,6 +126,8 @@ TEST(AcoConfig, FromParamsConvertsUnitsAndRejectsUnknownKeys) {
   const AcoConfig c = AcoConfig::fromParams(pm);
   EXPECT_EQ(c.ants, 5);
   EXPECT_NEAR(c.min_first_alteration, kPi / 6.0, 1e-12);
+  // The sea default is 30 deg, the evaluator's readily apparent alteration (EvaluationConfig).
+  EXPECT_NEAR(AcoConfig().min_first_alteration, degToRad(EvaluationConfig().apparent_course_deg), 1e-12);
   EXPECT_DOUBLE_EQ(c.row_spacing, 500.0);
   EXPECT_FALSE(c.smooth);
 
@@ -428,7 +431,8 @@ TEST(LazarowskaScenarios, TablesConvertToEnuAndSi) {
 }
 
 namespace {
-void checkScenario(int n, const PlanningProblem& p, const std::vector<double>& paper, bool paper_starboard) {
+// paper_side: check that the first alteration is to the paper's side.
+void checkScenario(int n, const PlanningProblem& p, const std::vector<double>& paper, bool paper_side) {
   AcoPlanner planner;
   const Plan plan = planner.plan(p);
   ASSERT_EQ(plan.status, PlanStatus::Ok) << plan.message;
@@ -447,8 +451,9 @@ void checkScenario(int n, const PlanningProblem& p, const std::vector<double>& p
               plan.compute_time * 1e3, paper_s.c_str());
   // The paper's first alteration: side, and a size between the apparent minimum and a moderate turn.
   const double paper_first = paper[1] - paper[0];
-  EXPECT_EQ(alt.front() > 0.0, paper_starboard);
-  EXPECT_EQ(paper_first > 0.0, paper_starboard);
+  if (paper_side) {
+    EXPECT_EQ(alt.front() > 0.0, paper_first > 0.0);
+  }
   EXPECT_GE(std::abs(alt.front()), radToDeg(AcoConfig().min_first_alteration) - 1e-6);
   EXPECT_LE(std::abs(alt.front()), 60.0);
   // Like the paper's, a handful of manoeuvres back to the final waypoint, barely longer than straight.
@@ -460,9 +465,12 @@ void checkScenario(int n, const PlanningProblem& p, const std::vector<double>& p
 TEST(LazarowskaScenarios, Scenario1LikeThePaper) {
   // Paper: 066 -> 077 (11 deg to starboard, astern of target 1) -> 052 (25 deg to port).
   checkScenario(1, lazarowskaScenario1(), lazarowskaScenario1CoursesDeg(), true);
+  EXPECT_GT(lazarowskaScenario1CoursesDeg()[1], lazarowskaScenario1CoursesDeg()[0]);  // to starboard
 }
 
 TEST(LazarowskaScenarios, Scenario2LikeThePaper) {
-  // Paper: 061 -> 050 (11 deg to port) -> 079 (29 deg to starboard) -> 061 (18 deg to port).
+  // Paper: 061 -> 050 (11 deg to port) -> 079 (29 deg to starboard) -> 061 (18 deg to port). Sea mode's
+  // apparent first alteration (30 deg) makes a port pass the longer one here, so the side is not the
+  // paper's (docs/results/aco.md compares both modes with it).
   checkScenario(2, lazarowskaScenario2(), lazarowskaScenario2CoursesDeg(), false);
 }

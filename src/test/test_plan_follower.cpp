@@ -8,6 +8,7 @@
 #include "asv_core/planning/dssa/dssa.h"
 #include "asv_core/planning/land_route.h"
 #include "asv_core/planning/plan_follower.h"
+#include "asv_core/planning/safety_net.h"
 
 namespace {
 
@@ -96,6 +97,13 @@ TEST(PlanFollower, PaperModeSwitchesTheSeaExtensionsOff) {
   asv::applyPlannerMode(c, asv::PlannerMode::Paper);
   EXPECT_FALSE(c.stand_on_policy);
   EXPECT_EQ(c.min_separation, 0.0);
+  EXPECT_TRUE(c.replan_on_risk);  // a method that replans keeps replanning on rising risk
+  // A method that plans once (ACO, Lazarowska 2015) sails its plan in paper mode; at sea it replans.
+  asv::PlanFollowerConfig once;
+  asv::applyPlannerMode(once, asv::PlannerMode::Sea, true);
+  EXPECT_TRUE(once.replan_on_risk);
+  asv::applyPlannerMode(once, asv::PlannerMode::Paper, true);
+  EXPECT_FALSE(once.replan_on_risk);
 
   asv::PlanningProblem pr;
   pr.own = own();
@@ -124,8 +132,9 @@ TEST(PlanFollower, PaperModeSwitchesTheSeaExtensionsOff) {
   EXPECT_EQ(paper.course_setpoint, 0.0);
   calls = 0;
   const asv::Plan sea = asv::planInMode(straight, pr, asv::PlannerMode::Sea);
-  EXPECT_GT(calls, 1);  // refused and asked again, then the separation net
+  EXPECT_EQ(calls, 1);  // refused for the preferred distance, and the net's turn for it taken instead
   EXPECT_NE(sea.course_setpoint, 0.0) << sea.message;
+  EXPECT_NE(sea.message.find("separation manoeuvre"), std::string::npos) << sea.message;
 }
 
 TEST(PlanFollower, RiskMustStayClearBeforeARiseReplansAgain) {
@@ -599,10 +608,38 @@ TEST(PlanUnderSharedRules, OpenWaterAsksForThePreferredDistanceFirst) {
   asv::Plan p = asv::planUnderSharedRules(east, pr);
   EXPECT_EQ(asked, (std::vector<double>{1852.0}));
   EXPECT_EQ(p.speed_setpoint, 6.0);
-  // A wide plan at under half the planned speed (2.9 < 3 m/s) does not keep the ship's way: the plan for
-  // the minimum is asked for and taken.
+  // A wide plan at under half the planned speed (2.9 < 3 m/s) does not keep the ship's way. The own ship
+  // keeps out of the way of a head-on ship: the net's turn to starboard at full speed for 1852 m is
+  // taken, and the minimum is never asked for.
   asked.clear();
   wide_speed = 2.9;
+  p = asv::planUnderSharedRules(east, pr);
+  EXPECT_EQ(asked, (std::vector<double>{1852.0}));
+  EXPECT_EQ(p.message.rfind("separation manoeuvre (preferred distance: ", 0), 0u) << p.message;
+  const double turn = asv::radToDeg(std::remainder(p.course_setpoint, 2.0 * asv::kPi));
+  EXPECT_GE(turn, 30.0 - 1e-9);
+  EXPECT_LE(turn, 90.0 + 1e-9);
+  ASSERT_EQ(p.waypoints.size(), 2u);
+  EXPECT_EQ(p.waypoints[1].speed, 6.0);
+  EXPECT_GE(asv::planSeparation(p, pr), 1852.0);
+  // A second ship, crossing from her port side 8 km west (she stands on for it): she has a duty besides
+  // keeping out of the way, and the net is not used for the preferred distance; the minimum is asked for.
+  asv::PlannerTarget port = t;
+  port.state.id = "ts2";
+  port.state.position = {-8000.0, 8000.0};
+  port.state.course = port.state.heading = asv::degToRad(90.0);
+  port.encounter = asv::Encounter::CrossingStandOn;
+  port.role = asv::OwnRole::StandOn;
+  pr.targets.push_back(port);
+  asked.clear();
+  p = asv::planUnderSharedRules(east, pr);
+  EXPECT_EQ(asked, (std::vector<double>{1852.0, 926.0}));
+  pr.targets.pop_back();
+  // The same for a ship she stands on for: no net (she keeps her course and speed for that ship, Rule
+  // 17); the plan for the minimum is asked for and taken.
+  pr.targets[0].encounter = asv::Encounter::CrossingStandOn;
+  pr.targets[0].role = asv::OwnRole::StandOn;
+  asked.clear();
   p = asv::planUnderSharedRules(east, pr);
   EXPECT_EQ(asked, (std::vector<double>{1852.0, 926.0}));
   EXPECT_EQ(p.speed_setpoint, 6.0);

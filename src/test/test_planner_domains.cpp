@@ -83,6 +83,12 @@ TEST(PlannerModes, PaperModeIsThePublishedMethod) {
                                    Eigen::Vector2d(463.0, 10000.0)})
     EXPECT_TRUE(hasVertex(d[0].polygon, v)) << v.transpose();
 
+  // Lazarowska (2015) plans once; the other three papers replan.
+  EXPECT_TRUE(aco.plansOnce());
+  EXPECT_FALSE(asv::GaPlanner().plansOnce());
+  EXPECT_FALSE(asv::MopsoPlanner().plansOnce());
+  EXPECT_FALSE(asv::DssaPlanner("dssa_plus").plansOnce());
+
   const asv::GaConfig ga = asv::GaConfig::fromParams(paper);  // Wu et al. (2022): the CRI alone
   EXPECT_EQ(ga.elite_count, 0);
   EXPECT_EQ(ga.safety_penalty + ga.colregs_penalty + ga.new_risk_penalty + ga.turn_penalty, 0.0);

@@ -87,13 +87,27 @@ TEST(SafetyNet, RouteClearanceMatchesHandGeometry) {
 }
 
 TEST(SafetyNet, AStraightOnPlanIntoAHeadOnShipIsReplacedByAStarboardManoeuvre) {
-  const PlanningProblem pr = headOn();
+  PlanningProblem pr = headOn();
   EXPECT_NEAR(planSeparation(straightOn(pr), pr), 0.0, 60.0);  // they meet at 4 km: 0 m, by 5 s samples
   int calls = 0;
-  const Plan p = planUnderSharedRules([&](const PlanningProblem& q) { return ++calls, straightOn(q); }, pr);
+  auto straight = [&](const PlanningProblem& q) { return ++calls, straightOn(q); };
+  // In open water the planner is asked for the preferred 2 x 926 m; its straight plan is refused and the
+  // net's turn to starboard at full speed for that distance is taken.
+  Plan p = planUnderSharedRules(straight, pr);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(p.message.rfind("separation manoeuvre (preferred distance: straight on)", 0), 0u) << p.message;
+  const double turn = std::remainder(p.course_setpoint - pr.own.course, kTwoPi);
+  EXPECT_GE(turn, degToRad(30.0) - 1e-9);
+  ASSERT_EQ(p.waypoints.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.waypoints[1].speed, 6.0);
+  EXPECT_GE(flownSeparation(p, pr), 1852.0);
+  // A ship the risk layer gives no encounter (so no give-way duty): the minimum, asked for again.
+  pr.targets[0].encounter = Encounter::None;
+  calls = 0;
+  p = planUnderSharedRules(straight, pr);
   EXPECT_EQ(calls, 5);  // the preferred distance (open water), the first plan and three retries, all straight on
   EXPECT_EQ(p.status, PlanStatus::Ok);
-  EXPECT_NE(p.message.find("separation manoeuvre"), std::string::npos) << p.message;
+  EXPECT_NE(p.message.find("separation manoeuvre (every plan in 4 tries"), std::string::npos) << p.message;
   // The first preference: 30 deg to starboard (Rule 14, readily apparent by Rule 8), at full speed.
   EXPECT_NEAR(std::remainder(p.course_setpoint - pr.own.course, kTwoPi), degToRad(30.0), 1e-9);
   ASSERT_EQ(p.waypoints.size(), 2u);
@@ -124,7 +138,11 @@ TEST(SafetyNet, NoSolutionBecomesTheManoeuvreAndWithoutAMinimumNothingChanges) {
     p.message = "stuck";
     return p;
   };
-  const Plan net = planUnderSharedRules(none, pr);
+  Plan net = planUnderSharedRules(none, pr);  // open water: the net for the preferred distance
+  EXPECT_EQ(net.status, PlanStatus::Ok);
+  EXPECT_NE(net.message.find("preferred distance: stuck"), std::string::npos) << net.message;
+  pr.targets[0].encounter = Encounter::None;  // no give-way duty: the net for the minimum
+  net = planUnderSharedRules(none, pr);
   EXPECT_EQ(net.status, PlanStatus::Ok);
   EXPECT_NE(net.message.find("no solution: stuck"), std::string::npos) << net.message;
   pr.min_separation = 0.0;  // the planners' own distances: the shared layer does not judge
@@ -157,4 +175,26 @@ TEST(SafetyNet, TheStandOnShipHoldsCourseWhenThePlanWouldCloseHerGiveWayShip) {
   EXPECT_NEAR(p.course_setpoint, 0.0, 1e-12);
   ASSERT_EQ(p.waypoints.size(), 2u);
   EXPECT_DOUBLE_EQ(p.waypoints[1].speed, 6.0);
+}
+
+// How planUnderSharedRules seeks the preferred distance: the net's turns to starboard at full speed only.
+// A ship crossing from starboard at 4 m/s, westbound 1 km ahead: where no turn to starboard at full speed
+// keeps the margin, the net by its order of preference slows down on the way (target 2.5 km east) or
+// turns 30 deg to port (1.5 km east); restricted, it keeps to starboard at full speed.
+TEST(SafetyNet, ThePreferredDistanceIsSoughtOnlyToStarboardAtFullSpeed) {
+  for (double east : {2500.0, 1500.0}) {
+    PlanningProblem pr = headOn();
+    PlannerTarget t = target("ts1", {east, 1000.0}, 270.0, 4.0);
+    t.encounter = Encounter::CrossingGiveWay;
+    t.role = OwnRole::GiveWay;
+    pr.targets = {t};
+    const Plan any = separationManoeuvre(pr, 0.0, "any");
+    ASSERT_EQ(any.waypoints.size(), 2u);
+    const double any_turn = std::remainder(any.course_setpoint - pr.own.course, kTwoPi);
+    EXPECT_TRUE(any.waypoints[1].speed < 6.0 || any_turn < 0.0) << any.message;
+    const Plan starboard = separationManoeuvre(pr, 0.0, "starboard", true);
+    ASSERT_EQ(starboard.waypoints.size(), 2u);
+    EXPECT_DOUBLE_EQ(starboard.waypoints[1].speed, 6.0) << starboard.message;
+    EXPECT_GE(std::remainder(starboard.course_setpoint - pr.own.course, kTwoPi), degToRad(30.0) - 1e-9);
+  }
 }

@@ -17,6 +17,7 @@ public:
   std::vector<asv::TargetDomain> domains(const asv::PlanningProblem& problem) const override {
     return algorithm_->domains(problem);
   }
+  bool plansOnce() const override { return algorithm_->plansOnce(); }
 
 protected:
   // `defaults`: the plugin's sea-scale defaults where the algorithm's own follow its paper's units;

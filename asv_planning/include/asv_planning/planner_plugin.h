@@ -29,6 +29,9 @@ public:
   virtual std::vector<asv::TargetDomain> domains(const asv::PlanningProblem& problem) const {
     return asv::separationDomains(problem);
   }
+  // The published method plans once and sails the plan (PlannerAlgorithm::plansOnce): paper mode's
+  // follower then does not replan on rising risk. Not pure: false, the methods replan.
+  virtual bool plansOnce() const { return false; }
 
 protected:
   PlannerPlugin() = default;

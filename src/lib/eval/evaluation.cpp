@@ -692,11 +692,11 @@ void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor
     if (p.cpas[k].tcpa >= 0.0 && riskLevel(p.cpas[k].tcpa, p.cpas[k].dcpa, cfg_.hu) == RiskLevel::Urgent)
       ku = k;
   const bool early = p.ka < both.size() && p.ka < ku;
-  const GiveWayDuty* duty = nullptr;
-  for (const GiveWayDuty& d : duties)
-    if (early && d.target != r.name && d.from <= both[p.ka].first->t && both[p.ka].first->t <= d.to)
-      duty = duty ? duty : &d;
-  if (early && duty) {
+  const double t_action = early ? both[p.ka].first->t : 0.0;
+  const auto duty = std::find_if(duties.begin(), duties.end(), [&](const GiveWayDuty& d) {
+    return d.target != r.name && d.from <= t_action && t_action <= d.to;
+  });
+  if (early && duty != duties.end()) {
     r.notes.push_back(fmt("rule 17 not applied: the stand-on ship altered at t=%.0f s while keeping out of "
                           "the way of ",
                           both[p.ka].first->t) +
@@ -741,24 +741,29 @@ size_t RunRecorder::entryInstant(const Instants& both, std::vector<Cpa>& cpas) c
   return ke;
 }
 
-std::vector<RunRecorder::GiveWayDuty> RunRecorder::giveWayDuties(size_t i) const {
+RunRecorder::PairHistory RunRecorder::pairHistory(size_t i, size_t j) const {
+  PairHistory h;
+  h.both = commonInstants(i, j);
+  h.ke = entryInstant(h.both, h.cpas);
+  return h;
+}
+
+std::vector<RunRecorder::GiveWayDuty> RunRecorder::giveWayDuties(
+    const std::vector<PairHistory>& pairs) const {
   std::vector<GiveWayDuty> out;
-  for (size_t j = 0; j < tracks_.size(); ++j) {
-    if (j == i)
+  for (size_t j = 0; j < pairs.size(); ++j) {
+    const PairHistory& h = pairs[j];
+    if (h.ke == h.both.size())
       continue;
-    const Instants both = commonInstants(i, j);
-    std::vector<Cpa> cpas;
-    const size_t ke = entryInstant(both, cpas);
-    if (ke == both.size())
-      continue;
-    const Passage p = passage(both, cpas, ke);
+    const Passage p = passage(h.both, h.cpas, h.ke);
     if (p.g.role == OwnRole::GiveWay || p.g.role == OwnRole::BothGiveWay)
-      out.push_back({info_.ships[j].name, both[ke].first->t, both[p.kc].first->t});
+      out.push_back({info_.ships[j].name, h.both[h.ke].first->t, h.both[p.kc].first->t});
   }
   return out;
 }
 
-TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const std::vector<GiveWayDuty>& duties) const {
+TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const PairHistory& h,
+                                       const std::vector<GiveWayDuty>& duties) const {
   TargetResult r;
   r.name = info_.ships[j].name;
   r.min_distance = min_dist_[i][j] < kFar ? min_dist_[i][j] : kNaN;
@@ -769,17 +774,15 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const std::vector<Giv
   }
   r.collision = collided_[i][j] != 0;
   r.safety = r.collision ? 0.0 : safetyScore(r.min_distance, r_pref_, r_min_, r_nm_, cfg_.safety_at_r_min);
-  const Instants both = commonInstants(i, j);
+  const Instants& both = h.both;
   if (both.empty()) {
     finishScore(r, 1.0);
     return r;
   }
-  const Cpa c0 = computeCpa(both.front().first->s, both.front().second->s);
+  const Cpa& c0 = h.cpas.front();
   r.tcpa_at_start = c0.tcpa;
   r.dcpa_at_start = c0.dcpa;
-  std::vector<Cpa> cpas;
-  const size_t ke = entryInstant(both, cpas);
-  if (ke == both.size()) {
+  if (h.ke == both.size()) {
     const EncounterGeometry g =
         classifyEncounter(both.front().first->s, both.front().second->s, c0, cfg_.colregs);
     r.encounter = g.encounter;
@@ -789,7 +792,7 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const std::vector<Giv
     return r;
   }
   r.evaluated = true;
-  const Passage p = passage(both, cpas, ke);
+  const Passage p = passage(both, h.cpas, h.ke);
   r.encounter = p.g.encounter;
   r.role = p.g.role;
   double factor = 1.0;
@@ -828,11 +831,16 @@ ShipResult RunRecorder::evaluateShip(size_t i) const {
   s.manoeuvres = manoeuvres(tr);
   double sum = 0.0, safety_sum = 0.0;
   int evaluated = 0;
-  const std::vector<GiveWayDuty> duties = giveWayDuties(i);
+  // Each pair's instants and CPAs once, for the duties and the pair's own judgement.
+  std::vector<PairHistory> pairs(tracks_.size());
+  for (size_t j = 0; j < tracks_.size(); ++j)
+    if (j != i)
+      pairs[j] = pairHistory(i, j);
+  const std::vector<GiveWayDuty> duties = giveWayDuties(pairs);
   for (size_t j = 0; j < tracks_.size(); ++j) {
     if (j == i || tracks_[j].points.empty())
       continue;
-    s.targets.push_back(evaluatePair(i, j, duties));
+    s.targets.push_back(evaluatePair(i, j, pairs[j], duties));
     const TargetResult& t = s.targets.back();
     safety_sum += t.score;
     if (t.evaluated) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "asv_core/common/geometry.h"
@@ -114,6 +115,23 @@ bool keepsWay(const Plan& plan, const PlanningProblem& problem) {
   return true;
 }
 
+// The own ship has to keep out of the way of a target (Rules 13-15: she overtakes it, meets it head-on or
+// it crosses from her starboard side).
+bool keepsOutOfTheWay(const PlannerTarget& t) {
+  return t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay ||
+         t.encounter == Encounter::Overtaking;
+}
+
+// She keeps out of the way of some target and has no other duty: no ship she stands on for, no other
+// encounter (a target with none is only passing).
+bool onlyKeepsOutOfTheWay(const PlanningProblem& pr) {
+  const auto& ts = pr.targets;
+  return pr.stand_on_for.empty() &&
+         std::any_of(ts.begin(), ts.end(), [](const auto& t) { return keepsOutOfTheWay(t); }) &&
+         std::all_of(ts.begin(), ts.end(),
+                     [](const auto& t) { return keepsOutOfTheWay(t) || t.encounter == Encounter::None; });
+}
+
 // Why a plan breaks a shared rule, or "" when it keeps them all.
 struct RuleCheck {
   const PlanningProblem& problem;
@@ -153,13 +171,44 @@ struct RuleCheck {
   static constexpr const char* kClosesStandOn = "closed a ship the own ship stands on for, Rule 17(a)(i)";
 };
 
+// The preferred passing distance first, in open water (kOpenWater, planning.h): in a port or a channel
+// the minimum separation is the standard, and the wider pass only costs time. The planner's plan for it,
+// else, when keeping out of the way is the own ship's only duty, the net's turn to starboard at full speed
+// (a planner's plan can fall short of it: a search horizon that ends before a slow overtaking's CPA, a
+// return leg the planner does not score). Not with other duties: a wide swing for one ship in crowded
+// waters cost arrivals (congested_port). Either is kept only when it keeps the ship's way and every shared
+// rule; `spent` gets the planner's time.
+std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem&)>& make,
+                                  const PlanningProblem& problem, const RuleCheck& check, double& spent) {
+  const double preferred = kPreferredSeparation * problem.min_separation;
+  if (trackObstacleDistance({problem.own.position}, problem.obstacles) < std::max(preferred, kOpenWater))
+    return std::nullopt;
+  PlanningProblem wide = problem;
+  wide.min_separation = preferred;
+  Plan plan = make(wide);
+  spent = plan.compute_time;
+  if (plan.status == PlanStatus::Ok && keepsWay(plan, problem) && check.broken(plan).empty()) {
+    plan.message += " (for the preferred distance, " + std::to_string(static_cast<int>(preferred)) + " m)";
+    return plan;
+  }
+  if (!onlyKeepsOutOfTheWay(problem))
+    return std::nullopt;
+  Plan net = separationManoeuvre(wide, check.land_required, "preferred distance: " + plan.message, true);
+  if (!keepsWay(net, problem) || planSeparation(net, problem) < preferred || !check.broken(net).empty())
+    return std::nullopt;
+  net.compute_time = spent;
+  return net;
+}
+
 }  // namespace
 
-void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode) {
+void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once) {
   if (mode != PlannerMode::Paper)
     return;
   cfg.stand_on_policy = false;
   cfg.min_separation = 0.0;
+  if (plans_once)
+    cfg.replan_on_risk = false;
 }
 
 Plan planInMode(const std::function<Plan(const PlanningProblem&)>& make, const PlanningProblem& problem,
@@ -176,18 +225,9 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
     check.give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
   const bool separation_net = problem.min_separation > 0.0 && !problem.targets.empty();
   double preferred_time = 0.0;
-  // The preferred passing distance first, in open water (kOpenWater, planning.h): in a port or a
-  // channel the minimum separation is the standard, and the wider pass only costs time.
-  const double preferred = kPreferredSeparation * problem.min_separation;
-  const double open_water = std::max(preferred, kOpenWater);
-  if (separation_net && trackObstacleDistance({problem.own.position}, problem.obstacles) >= open_water) {
-    PlanningProblem wide = problem;
-    wide.min_separation = preferred;
-    Plan wide_plan = make(wide);
-    if (wide_plan.status == PlanStatus::Ok && keepsWay(wide_plan, problem) && check.broken(wide_plan).empty())
-      return wide_plan;
-    preferred_time = wide_plan.compute_time;
-  }
+  if (separation_net)
+    if (std::optional<Plan> wide = preferredPlan(make, problem, check, preferred_time))
+      return *wide;
   Plan first = make(problem);
   first.compute_time += preferred_time;
   const std::string why = check.broken(first);

@@ -125,11 +125,15 @@ struct Candidate {
 };
 
 // The candidates in order of preference (see separationManoeuvre).
-std::vector<Candidate> candidates() {
+std::vector<Candidate> candidates(bool starboard_at_full_speed) {
   std::vector<Candidate> c;
   for (double factor : {1.0, 0.5})
     for (int deg = 30; deg <= 90; deg += 10)
       c.push_back({degToRad(deg), factor});
+  if (starboard_at_full_speed) {
+    c.resize(7);  // 30 to 90 deg in 10 deg steps at full speed
+    return c;
+  }
   c.push_back({0.0, 0.5});
   for (int deg = 30; deg <= 90; deg += 10)
     c.push_back({-degToRad(deg), 1.0});
@@ -220,14 +224,15 @@ Plan described(Plan p, const PlanningProblem& pr, double clearance, const std::s
 
 }  // namespace
 
-Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const std::string& why) {
+Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const std::string& why,
+                         bool starboard_at_full_speed) {
   const double wanted = kSeparationMargin * pr.min_separation;
   auto clearOfLand = [&](const Plan& p) { return routeKeepsOffLand(planRoute(p, pr), pr, land_clearance); };
   // The first candidate that keeps the margin, in the order of preference; else the first that keeps
   // the minimum; else the one that keeps farthest, or stopping when that keeps farther still.
   std::optional<std::pair<Plan, double>> first_minimum, farthest;
   const double base = wayCourse(pr);
-  for (const Candidate& c : candidates())
+  for (const Candidate& c : candidates(starboard_at_full_speed))
     for (double hold : holdTimes(pr, base, c)) {
       const Plan p = manoeuvrePlan(pr, base, c, hold);
       if (!clearOfLand(p))

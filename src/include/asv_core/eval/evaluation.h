@@ -239,10 +239,20 @@ private:
   // Ship i's hull in sample s against every static obstacle: min_obstacle_, grounded_.
   void checkLand(size_t i, const ShipSample& s);
   ShipResult evaluateShip(size_t i) const;
-  TargetResult evaluatePair(size_t i, size_t j, const std::vector<GiveWayDuty>& duties) const;
+  // Ships i and j over the run: their common instants, the CPA at each and the entry into the rules
+  // (ke; both.size() when none).
+  struct PairHistory {
+    Instants both;
+    std::vector<Cpa> cpas;
+    size_t ke = 0;
+  };
+  PairHistory pairHistory(size_t i, size_t j) const;
+  TargetResult evaluatePair(size_t i, size_t j, const PairHistory& h,
+                            const std::vector<GiveWayDuty>& duties) const;
   Instants commonInstants(size_t i, size_t j) const;
   size_t entryInstant(const Instants& both, std::vector<Cpa>& cpas) const;
-  std::vector<GiveWayDuty> giveWayDuties(size_t i) const;
+  // The ships ship i had to keep out of the way of (pairs[j]: ship j's history with ship i).
+  std::vector<GiveWayDuty> giveWayDuties(const std::vector<PairHistory>& pairs) const;
   Passage passage(const Instants& both, const std::vector<Cpa>& cpas, size_t ke) const;
   void judgeGiveWay(const Passage& p, TargetResult& r, double& factor) const;
   void judgeStandOn(const Passage& p, TargetResult& r, double& factor,

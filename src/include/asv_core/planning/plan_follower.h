@@ -83,9 +83,10 @@ bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
 
 // Paper mode (plannerMode, planning.h) runs the method as published: the shared rules above, the
 // follower's stand-on policy and its minimum separation are this stack's sea extensions, so they are
-// off. applyPlannerMode sets the follower for the mode; planInMode asks the planner under the shared
-// rules at sea and alone in paper mode.
-void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode);
+// off. applyPlannerMode sets the follower for the mode (and, in paper mode, for a method that plans once,
+// PlannerAlgorithm::plansOnce: no replanning on rising risk); planInMode asks the planner under the
+// shared rules at sea and alone in paper mode.
+void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once = false);
 Plan planInMode(const std::function<Plan(const PlanningProblem&)>& make, const PlanningProblem& problem,
                 PlannerMode mode);
 

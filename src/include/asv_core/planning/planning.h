@@ -165,6 +165,9 @@ public:
   virtual std::vector<TargetDomain> domains(const PlanningProblem& problem) const {
     return separationDomains(problem);
   }
+  // The published method computes its trajectory once and sails it: in paper mode the follower does not
+  // replan when a target's risk rises (applyPlannerMode). False by default: the methods replan.
+  virtual bool plansOnce() const { return false; }
 };
 
 // Wall-clock budget helper for anytime algorithms.

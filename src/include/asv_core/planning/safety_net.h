@@ -60,7 +60,10 @@ Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTar
 // its turn to the last one's. The ship holds
 // the new course until every target is past and then steers for the goal. When none keeps the margin,
 // the one that keeps the ship farthest from every target. Status Ok (Fallback when it stops); `why`
-// goes into the message.
-Plan separationManoeuvre(const PlanningProblem& problem, double land_clearance, const std::string& why);
+// goes into the message. starboard_at_full_speed: the turns to starboard at full speed only (how
+// planUnderSharedRules seeks the preferred passing distance, which is worth neither the ship's way nor a
+// turn to port).
+Plan separationManoeuvre(const PlanningProblem& problem, double land_clearance, const std::string& why,
+                         bool starboard_at_full_speed = false);
 
 }  // namespace asv

@@ -66,8 +66,9 @@ struct AcoConfig {
   // --- Manoeuvres (COLREGs Rule 8(b) and the manoeuvre time, eq. 5-6) ---
   // [rad] key min_first_alteration_deg: the first course alteration away from the present course must
   // be at least this large to be "readily apparent" (Rule 8(b)); 0 disables. The paper reports 11 deg
-  // alterations; we default to 15 deg, the lower end of what the guides call apparent to radar.
-  double min_first_alteration = degToRad(15.0);
+  // alterations; we default to 30 deg, the evaluator's apparent alteration (evaluation.h) and the usual
+  // guidance for a substantial one (docs/results/aco.md).
+  double min_first_alteration = degToRad(30.0);
   // [rad] key max_alteration_deg: largest single course alteration, (0, 120] deg. Eq. (6) is only
   // meaningful below ~133 deg (the tangent term grows past the turn time). Default 90 deg.
   double max_alteration = degToRad(90.0);
@@ -222,6 +223,8 @@ public:
   // The hexagon round each target as plan() uses it: inflated to the problem's min_separation, and
   // colregs_factor for a head-on or give-way target (targetDomain).
   std::vector<TargetDomain> domains(const PlanningProblem& problem) const override;
+  // Lazarowska (2015) computes the trajectory once, before the encounter, and the ship sails it.
+  bool plansOnce() const override { return true; }
   const AcoConfig& config() const { return cfg_; }
   const AcoDiagnostics& diagnostics() const { return diag_; }
 
