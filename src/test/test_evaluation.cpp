@@ -163,6 +163,21 @@ TEST(Evaluation, StandOnShipThatTurnsEarlyGetsTheRule17Penalty) {
   EXPECT_NEAR(t.score, 0.5, 1e-12);
 }
 
+namespace {
+
+// ts1 from port, (-5000, 5000) heading east, for which the own ship stands on; she turns 40 deg to
+// starboard at t = 10 s. ts2 starts 12 km ahead at 5 m/s on the given course.
+Script standOnTurnWith(double ts2_course_deg) {
+  Script s;
+  s.tgt0 = {-5000.0, 5000.0};
+  s.tgt_course_deg = 90.0;
+  s.others = {{{0.0, 12000.0}, ts2_course_deg, 5.0}};
+  s.own_course_deg = {{0.0, 0.0}, {10.0, 40.0}};
+  return s;
+}
+
+}  // namespace
+
 TEST(Evaluation, StandOnAlterationWhileGivingWayToAnotherShipIsNoRule17Finding) {
   // ts1 as in the test above: from port, (-5000, 5000) heading east, the own ship stands on; her
   // 40 deg starboard turn at t = 10 s leaves it at DCPA 2394 m (safety 1). ts2 meets her head-on:
@@ -170,12 +185,7 @@ TEST(Evaluation, StandOnAlterationWhileGivingWayToAnotherShipIsNoRule17Finding) 
   // turn ts2 is at (0, 11900) relative, closing at (-3.214, -8.830): DCPA |11900 x 3.214| / 9.397 =
   // 4070 m (safety 1); 40 deg >= 30 (Rule 8); at 11.9 km (Rule 16). So ts2 scores 1, and the turn
   // taken while keeping out of ts2's way is no Rule 17 finding for ts1: 1, not 0.5.
-  Script s;
-  s.tgt0 = {-5000.0, 5000.0};
-  s.tgt_course_deg = 90.0;
-  s.others = {{{0.0, 12000.0}, 180.0, 5.0}};
-  s.own_course_deg = {{0.0, 0.0}, {10.0, 40.0}};
-  const RunResult r = record(s).finish();
+  const RunResult r = record(standOnTurnWith(180.0)).finish();
   ASSERT_EQ(r.own.targets.size(), 2u);
   const TargetResult& t1 = r.own.targets[0];
   const TargetResult& t2 = r.own.targets[1];
@@ -194,12 +204,7 @@ TEST(Evaluation, StandOnAlterationWhileGivingWayToAnotherShipIsNoRule17Finding) 
 TEST(Evaluation, AnotherShipWithoutRiskDoesNotExcuseAnEarlyStandOnAlteration) {
   // The same turn, but ts2 sails north 12 km ahead at the own ship's speed: no relative motion, no risk,
   // no duty. ts1's finding stands: 0.5, as with ts1 alone.
-  Script s;
-  s.tgt0 = {-5000.0, 5000.0};
-  s.tgt_course_deg = 90.0;
-  s.others = {{{0.0, 12000.0}, 0.0, 5.0}};
-  s.own_course_deg = {{0.0, 0.0}, {10.0, 40.0}};
-  const RunResult r = record(s).finish();
+  const RunResult r = record(standOnTurnWith(0.0)).finish();
   const TargetResult& t1 = r.own.targets.at(0);
   EXPECT_TRUE(hasNote(t1, "rule 17: the stand-on ship altered"));
   EXPECT_NEAR(t1.score, 0.5, 1e-12);

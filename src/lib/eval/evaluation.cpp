@@ -756,7 +756,7 @@ std::vector<RunRecorder::GiveWayDuty> RunRecorder::giveWayDuties(
     if (h.ke == h.both.size())
       continue;
     const Passage p = passage(h.both, h.cpas, h.ke);
-    if (p.g.role == OwnRole::GiveWay || p.g.role == OwnRole::BothGiveWay)
+    if (givesWay(p.g.role))
       out.push_back({info_.ships[j].name, h.both[h.ke].first->t, h.both[p.kc].first->t});
   }
   return out;
@@ -796,7 +796,7 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const PairHistory& h,
   r.encounter = p.g.encounter;
   r.role = p.g.role;
   double factor = 1.0;
-  if (p.g.role == OwnRole::GiveWay || p.g.role == OwnRole::BothGiveWay)
+  if (givesWay(p.g.role))
     judgeGiveWay(p, r, factor);
   else if (p.g.role == OwnRole::StandOn)
     judgeStandOn(p, r, factor, duties);

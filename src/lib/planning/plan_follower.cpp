@@ -10,6 +10,7 @@
 #include "asv_core/common/units.h"
 #include "asv_core/planning/land_route.h"
 #include "asv_core/planning/safety_net.h"
+#include "asv_core/risk/colregs.h"
 
 namespace asv {
 
@@ -117,10 +118,7 @@ bool keepsWay(const Plan& plan, const PlanningProblem& problem) {
 
 // The own ship has to keep out of the way of a target (Rules 13-15: she overtakes it, meets it head-on or
 // it crosses from her starboard side).
-bool keepsOutOfTheWay(const PlannerTarget& t) {
-  return t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay ||
-         t.encounter == Encounter::Overtaking;
-}
+bool keepsOutOfTheWay(const PlannerTarget& t) { return givesWay(ownRole(t.encounter)); }
 
 // She keeps out of the way of some target and has no other duty: no ship she stands on for, no other
 // encounter (a target with none is only passing).

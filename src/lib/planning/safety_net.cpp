@@ -127,13 +127,12 @@ struct Candidate {
 // The candidates in order of preference (see separationManoeuvre).
 std::vector<Candidate> candidates(bool starboard_at_full_speed) {
   std::vector<Candidate> c;
-  for (double factor : {1.0, 0.5})
-    for (int deg = 30; deg <= 90; deg += 10)
-      c.push_back({degToRad(deg), factor});
-  if (starboard_at_full_speed) {
-    c.resize(7);  // 30 to 90 deg in 10 deg steps at full speed
+  for (int deg = 30; deg <= 90; deg += 10)
+    c.push_back({degToRad(deg), 1.0});
+  if (starboard_at_full_speed)
     return c;
-  }
+  for (int deg = 30; deg <= 90; deg += 10)
+    c.push_back({degToRad(deg), 0.5});
   c.push_back({0.0, 0.5});
   for (int deg = 30; deg <= 90; deg += 10)
     c.push_back({-degToRad(deg), 1.0});

@@ -27,6 +27,10 @@ enum class OwnRole : uint8_t {
 const char* toString(Encounter e);
 const char* toString(OwnRole r);
 OwnRole ownRole(Encounter e);
+// The own ship has to keep out of the way (Rules 13-16), alone or, head-on, with the other ship (Rule 14).
+inline bool givesWay(OwnRole r) {
+  return r == OwnRole::GiveWay || r == OwnRole::BothGiveWay;
+}
 // The rule that governs the own ship in this encounter: 13, 14, 15 (give-way crossing, with 16),
 // 17 (stand-on), 0 for none.
 int applicableRule(Encounter e);
