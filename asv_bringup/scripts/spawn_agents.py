@@ -9,8 +9,10 @@ run this script on several machines with --ships to place ships on different com
 "Distributed DSSA").
 
 Parameters of each node: asv_planning/config/planner_node.yaml, then planner, ship, scenario, seed,
-distributed; for dssa/dssa_plus asv_planning/config/dssa.yaml under ~<planner>/; then --param-file
-(under every node's private namespace) and --set SHIP:KEY=VALUE (one node's private key, YAML value).
+distributed; for dssa/dssa_plus asv_planning/config/dssa.yaml under ~<planner>/, less the keys the
+scenario's planner_params set for that planner (the node reads those from the scenario: a paper scenario
+runs with the paper's values and mode); then --param-file (under every node's private namespace) and
+--set SHIP:KEY=VALUE (one node's private key, YAML value).
 
     spawn_agents.py --scenario FILE [--planner NAME] [--ships a,b] [--seed N] [--output screen|log]
                     [--distributed true|false] [--param-file FILE] [--set SHIP:KEY=VALUE ...]
@@ -41,6 +43,13 @@ def planning_ships(scenario):
                 raise ValueError("target '%s' has behaviour planner but no planner" % t.get("name"))
             out.append((str(t["name"]), str(t["planner"])))
     return out
+
+
+def package_defaults(defaults, scenario, planner):
+    """The package's parameter file for `planner` without the keys the scenario's planner_params set:
+    the node puts its private parameters over the scenario's, so a package default would override them."""
+    own = (scenario.get("planner_params") or {}).get(planner) or {}
+    return {k: v for k, v in defaults.items() if k not in own}
 
 
 def parse_bool(text):
@@ -114,7 +123,7 @@ def main():
         rosparam.upload_params(ns, {"planner": planner, "ship": ship, "scenario": args.scenario,
                                     "seed": args.seed, "distributed": args.distributed})
         if planner in ("dssa", "dssa_plus"):
-            rosparam.upload_params(ns + "/" + planner, dssa_yaml)
+            rosparam.upload_params(ns + "/" + planner, package_defaults(dssa_yaml, scenario, planner))
         if extra:
             rosparam.upload_params(ns, extra)
         for key, value in per_ship.get(ship, []):

@@ -10,12 +10,18 @@ Expectations come from the scenario file and the simulator's ground truth, not f
 - the smallest distance between any two ships still under way (sim/ships) stays above ~min_separation;
 - every ship published intentions on /intentions, in more than one search phase;
 - with ~drop_ship: no intention of that ship was heard while its outgoing messages were dropped, and
-  some were heard before and after (the loss really happened and the ship came back).
+  some were heard before and after (the loss really happened and the ship came back);
+- with ~batch_planner: the same scenario through asv_batch (every ship that planner, its in-process
+  exchange, seed 1) has the same outcome (every ship arrives, no collision), each ship's time to her goal
+  agrees within TIME_BAND and the closest approach of two ships within GAP_BAND: the ROS agents and the
+  batch's run one algorithm, only the exchange's timing differs.
 
 Private parameters: scenario (file), time_limit [s, wall], min_separation [m], collision_m [m],
-drop_ship, drop_from, drop_until [s, ROS time].
+drop_ship, drop_from, drop_until [s, ROS time], batch_planner.
 """
+import json
 import math
+import subprocess
 import sys
 import threading
 import time
@@ -27,6 +33,19 @@ import yaml
 from asv_msgs.msg import Intention, SimEvent, TargetArray
 
 SIM_EPOCH = 1.0e9  # ROS time of simulation time 0 (asv_sim sim_node)
+TIME_BAND = 0.10  # ROS against asv_batch, each ship's time to her goal: one 1 s step in the paper's 20
+GAP_BAND = 0.25  # ... and the closest approach of two ships: the exchange's timing moves a decision a little
+
+
+def batch_run(scenario_file, planner):
+    """The scenario through asv_batch, every planning ship running `planner` (its result JSON)."""
+    proc = subprocess.run(["rosrun", "asv_sim", "asv_batch", "--scenario", scenario_file, "--planner", planner,
+                           "--agents", planner, "--seed", "1", "--quiet"], stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, timeout=300)
+    out = proc.stdout.decode(errors="replace")
+    if proc.returncode != 0:
+        raise AssertionError("asv_batch failed:\n" + out[-3000:])
+    return json.loads(out.splitlines()[0])
 
 
 def straight_min_distance(a, b):
@@ -59,6 +78,7 @@ class DssaAgents(unittest.TestCase):
         self.drop_ship = rospy.get_param("~drop_ship", "")
         self.drop_from = rospy.get_param("~drop_from", 0.0)
         self.drop_until = rospy.get_param("~drop_until", 0.0)
+        self.batch_planner = rospy.get_param("~batch_planner", "")
         self.lock = threading.Lock()
         self.events = []
         self.arrived = set()
@@ -132,6 +152,23 @@ class DssaAgents(unittest.TestCase):
                                  self.drop_ship)
                 self.assertGreater(self.drop_heard["before"], 0)
                 self.assertGreater(self.drop_heard["after"], 0)
+        if self.batch_planner:
+            self.agree_with_batch(arrivals)
+
+    def agree_with_batch(self, arrivals):
+        ref = batch_run(self.scenario_file, self.batch_planner)
+        ships = {s["name"]: s for s in ref["ships"]}
+        rospy.loginfo("test_dssa_agents: asv_batch: times to goal %s, closest %.0f m",
+                      {n: s["time_to_goal_s"] for n, s in ships.items()}, ref["min_separation_m"])
+        self.assertFalse(ref["collision"], "asv_batch: " + json.dumps(ref))
+        for n in self.names:
+            self.assertTrue(ships[n]["arrived"], "asv_batch: %s did not arrive" % n)
+            want = ships[n]["time_to_goal_s"]
+            self.assertLess(abs(arrivals[n] - want), TIME_BAND * want,
+                            "%s: time to goal %.1f s through ROS, %.1f s through asv_batch" % (n, arrivals[n], want))
+        want = ref["min_separation_m"]
+        self.assertLess(abs(self.min_pair[0] - want), GAP_BAND * want,
+                        "closest approach %.0f m through ROS, %.0f m through asv_batch" % (self.min_pair[0], want))
 
 
 if __name__ == "__main__":

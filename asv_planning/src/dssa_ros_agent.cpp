@@ -37,6 +37,19 @@ DssaExchangeParams DssaExchangeParams::load(const ros::NodeHandle& pnh) {
                                                  "asv_planning/config/dssa.yaml");
 }
 
+namespace {
+
+// ~exchange/, with the scenario's goal radius as the arrival radius when none is set: a ship that left
+// the exchange farther out (a paper's scale) would no longer avoid anyone before she has arrived.
+DssaExchangeParams exchangeParams(const ros::NodeHandle& pnh, const DssaRosOptions& options) {
+  DssaExchangeParams p = DssaExchangeParams::load(pnh);
+  if (options.goal_radius > 0.0 && !pnh.hasParam("exchange/arrival_radius"))
+    p.arrival_radius = options.goal_radius;
+  return p;
+}
+
+}  // namespace
+
 bool DssaRosAgent::wanted(const std::string& planner, bool distributed) {
   // Off by default: an agent sees only ships that exchange intentions, so against ordinary traffic
   // (AIS/radar targets) the single-ship plugin is the safe choice. agents.launch turns it on.
@@ -72,7 +85,7 @@ DssaRosAgent::DssaRosAgent(const ros::NodeHandle& nh, const ros::NodeHandle& pnh
     : nh_(nh),
       config_(config),
       opt_(options),
-      ex_(DssaExchangeParams::load(pnh)),
+      ex_(exchangeParams(pnh, options)),
       id_(shipId(options.ship)),
       agent_(id_, config, shipSpeeds(config, options)),
       rng_(asv::dssaAgentSeed(static_cast<uint64_t>(options.seed), id_)),

@@ -108,6 +108,12 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
     lockstep_.start();  // nothing to do at any step, but the simulation waits for every participant
     return;
   }
+  asv::OwnShipLimits& limits = p.follower.limits;
+  if (p.follower.cruise_speed > limits.max_speed) {
+    ROS_WARN("planner_node: cruise speed %.1f m/s above max_speed %.1f m/s: max_speed raised to it",
+             p.follower.cruise_speed, limits.max_speed);
+    limits.max_speed = p.follower.cruise_speed;
+  }
   mode_ = pluginParams(p.planner).getString("mode", mode_);
   plugin_ = loader_.load(p.planner, pluginParams(p.planner));
   if (DssaRosAgent::wanted(p.planner, p.distributed)) {  // distributed DSSA: the agent drives cmd
@@ -115,15 +121,9 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
     dssa_ = std::make_unique<DssaRosAgent>(
         nh_, pnh_, DssaRosAgent::configOf(*plugin_),
         DssaRosOptions{p.ship, p.frame_id, p.has_goal, p.goal, f.cruise_speed, f.limits.min_speed,
-                       f.limits.max_speed, f.seed});
+                       f.limits.max_speed, f.seed, scenario_goal_radius_});
     lockstep_.start();  // the distributed agents keep their own timing (agents.launch, not lockstep)
     return;
-  }
-  asv::OwnShipLimits& limits = p.follower.limits;
-  if (p.follower.cruise_speed > limits.max_speed) {
-    ROS_WARN("planner_node: cruise speed %.1f m/s above max_speed %.1f m/s: max_speed raised to it",
-             p.follower.cruise_speed, limits.max_speed);
-    limits.max_speed = p.follower.cruise_speed;
   }
   follower_config_ = followerConfig(p, lockstep_.enabled(), mode_, *plugin_);
   follower_ = std::make_unique<asv::PlanFollower>(follower_config_);  // validates: throws on a bad value
@@ -161,6 +161,7 @@ void PlannerNode::applyScenario() {
   if (sc.min_obstacle_clearance > 0.0)
     p.follower.min_obstacle_clearance_m = sc.min_obstacle_clearance;  // the waters' own (a port)
   scenario_planner_ = ship->planner;
+  scenario_goal_radius_ = ship->goal_radius;
   if (p.planner.empty())
     p.planner = ship->planner;
 }

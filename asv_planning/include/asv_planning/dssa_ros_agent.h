@@ -23,8 +23,9 @@
 //     seen quiescence yet stops waiting for this ship.
 //   Then the ship steers by its intention (cmd: course and speed) until the next step.
 //   A ship with no neighbour completes each round at once (nothing to wait for).
-//   Within ~exchange/arrival_radius of its goal the ship leaves the exchange (publishes `leaving`, which
-//   makes the others forget it) and steers straight for the goal.
+//   Within ~exchange/arrival_radius of its goal (the scenario's goal radius when that is not set) the
+//   ship leaves the exchange (publishes `leaving`, which makes the others forget it) and steers straight
+//   for the goal.
 //
 // Threads: the intention and odometry callbacks run on the agent's own callback queue (one
 // AsyncSpinner thread) and the search runs on a worker thread, so waiting for a round never blocks a
@@ -71,6 +72,9 @@ struct DssaRosOptions {
   double min_speed = 0.0;                          // [m/s] MinSPD
   double max_speed = 10.0;                         // [m/s] MaxSPD
   int seed = 1;                                    // the agent draws from dssaAgentSeed(seed, id)
+  // [m] the scenario's arrival radius round the goal (goal_radius_m; 0: none given): where the ship
+  // leaves the exchange unless ~exchange/arrival_radius is set, as the simulator counts her arrived there.
+  double goal_radius = 0.0;
 };
 
 // ~exchange/ parameters (config/dssa.yaml).

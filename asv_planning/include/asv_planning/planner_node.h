@@ -117,6 +117,7 @@ private:
   std::string scenario_planner_;        // the scenario's planner for this ship ("" without scenario)
   std::string mode_ = "sea";            // the plugin's mode in force (its key mode)
   double scenario_min_separation_ = 0;  // [m] the scenario's (0: none)
+  double scenario_goal_radius_ = 0;     // [m] this ship's arrival radius in the scenario (0: none)
   std::unique_ptr<dynamic_reconfigure::Server<PlannerConfig>> live_;
   bool live_started_ = false;
 };
