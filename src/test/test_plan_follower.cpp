@@ -575,23 +575,36 @@ TEST(PlanFollower, DegradedDropsAPlanThatNoLongerPassesTheLastPicture) {
       std::invalid_argument);
 }
 
+namespace {
+
+// The own ship of own() for a goal `ahead` m north, minimum separation 926 m, and one ship ts1 at `at`
+// on `course_deg` at `speed` in the encounter `e` (the own ship's role from it).
+asv::PlanningProblem oneShip(double ahead, const Eigen::Vector2d& at, double course_deg, double speed,
+                             asv::Encounter e) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {0.0, ahead};
+  pr.min_separation = 926.0;
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.state.position = at;
+  t.state.course = t.state.heading = asv::degToRad(course_deg);
+  t.state.speed = speed;
+  t.encounter = e;
+  t.role = asv::ownRole(e);
+  pr.targets = {t};
+  return pr;
+}
+
+}  // namespace
+
 // The preferred passing distance (kPreferredSeparation x min_separation, planning.h): in open water the
 // planner is asked for it first, and its plan is kept when it is Ok and keeps the ship's way. A head-on
 // target 10 km ahead; the fake planner's plan turns due east at `speed` (the target, on x = 0, never
 // comes within 9 km of that track: every rule kept).
 TEST(PlanUnderSharedRules, OpenWaterAsksForThePreferredDistanceFirst) {
-  asv::PlanningProblem pr;
-  pr.own = own();
-  pr.goal = {0.0, 20000.0};
-  pr.min_separation = 926.0;
-  asv::PlannerTarget t;
-  t.state.id = "ts1";
-  t.state.position = {0.0, 10000.0};
-  t.state.course = t.state.heading = asv::degToRad(180.0);
-  t.state.speed = 6.0;
-  t.encounter = asv::Encounter::HeadOn;
-  t.role = asv::OwnRole::BothGiveWay;
-  pr.targets = {t};
+  asv::PlanningProblem pr = oneShip(20000.0, {0.0, 10000.0}, 180.0, 6.0, asv::Encounter::HeadOn);
+  const asv::PlannerTarget t = pr.targets[0];
   std::vector<double> asked;
   double wide_speed = 6.0;
   auto east = [&](const asv::PlanningProblem& q) {
@@ -656,4 +669,41 @@ TEST(PlanUnderSharedRules, OpenWaterAsksForThePreferredDistanceFirst) {
   asked.clear();
   asv::planUnderSharedRules(east, pr);
   EXPECT_EQ(asked, (std::vector<double>{1852.0}));
+}
+
+// An overtaking is judged over the whole pass (passingHorizon), not the 1200 s prediction horizon. The own
+// ship (north, 6 m/s, goal 30 km ahead) overtakes a ship 3 km ahead at 3 m/s. The fake planner's plan
+// swings out to (2400, 300) (403 s) and back for the goal: by hand, at 1200 s the ship is 2015 m abeam
+// and 1534 m astern of the target (2532 m apart), but she comes abeam at 1715 s only 1766 m off. The
+// whole pass lasts 1000 s to the CPA + 2037 m / 3 m/s to open + 60 s = 1739 s. So the plan keeps the
+// preferred 1852 m over the horizon but not over the pass, and the net's turn to starboard, held until
+// the ship is clear, is taken instead; the minimum is never asked for.
+TEST(PlanUnderSharedRules, AnOvertakingIsJudgedOverTheWholePass) {
+  asv::PlanningProblem pr = oneShip(30000.0, {0.0, 3000.0}, 0.0, 3.0, asv::Encounter::Overtaking);
+  std::vector<double> asked;
+  auto swing = [&](const asv::PlanningProblem& q) {
+    asked.push_back(q.min_separation);
+    asv::Plan p;
+    p.status = asv::PlanStatus::Ok;
+    p.course_setpoint = asv::courseOf({2400.0, 300.0});
+    p.speed_setpoint = 6.0;
+    p.waypoints = {{{0.0, 0.0}, 0.0, p.course_setpoint, 6.0},
+                   {{2400.0, 300.0}, std::hypot(2400.0, 300.0) / 6.0, p.course_setpoint, 6.0}};
+    p.message = "swing";
+    return p;
+  };
+  asv::PlanningProblem wide = pr;
+  wide.min_separation = 1852.0;
+  EXPECT_NEAR(asv::passingHorizon(wide), 1000.0 + 1.1 * 1852.0 / 3.0 + 60.0, 1e-6);
+  EXPECT_GE(asv::planSeparation(swing(wide), wide), 1852.0);
+  wide.prediction_horizon = asv::passingHorizon(wide);
+  EXPECT_NEAR(asv::planSeparation(swing(wide), wide), 1766.0, 15.0);
+  asked.clear();
+  const asv::Plan p = asv::planUnderSharedRules(swing, pr);
+  EXPECT_EQ(asked, (std::vector<double>{1852.0}));
+  EXPECT_EQ(p.message.rfind("separation manoeuvre (preferred distance: swing)", 0), 0u) << p.message;
+  EXPECT_GE(asv::planSeparation(p, wide), 1852.0);
+  // Met head-on instead, the same plan is judged over the horizon and kept as it is.
+  pr.targets[0].encounter = asv::Encounter::HeadOn;
+  EXPECT_EQ(asv::planUnderSharedRules(swing, pr).message, "swing (for the preferred distance, 1852 m)");
 }

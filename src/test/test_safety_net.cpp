@@ -198,3 +198,60 @@ TEST(SafetyNet, ThePreferredDistanceIsSoughtOnlyToStarboardAtFullSpeed) {
     EXPECT_GE(std::remainder(starboard.course_setpoint - pr.own.course, kTwoPi), degToRad(30.0) - 1e-9);
   }
 }
+
+namespace {
+
+// Own ship at the origin heading north at 6 m/s for a goal 30 km ahead; a ship `ahead` m ahead on the
+// same course at `speed`, which she overtakes (Rule 13).
+PlanningProblem slowOvertaking(double ahead, double speed) {
+  PlanningProblem pr = headOn();
+  pr.goal = {0.0, 30000.0};
+  PlannerTarget t = target("ts1", {0.0, ahead}, 0.0, speed);
+  t.encounter = Encounter::Overtaking;
+  t.role = OwnRole::GiveWay;
+  pr.targets = {t};
+  return pr;
+}
+
+}  // namespace
+
+// passingHorizon: sailing for the goal, the own ship closes a ship 2000 m ahead at 6 - 4 = 2 m/s: CPA
+// (DCPA 0) at 1000 s, and the range opens to 1.1 x 926 = 1018.6 m another 509.3 s later; plus a minute:
+// 1569.3 s, beyond the 1200 s prediction horizon.
+TEST(SafetyNet, PassingHorizonLastsUntilAnOvertakenShipIsPast) {
+  PlanningProblem pr = slowOvertaking(2000.0, 4.0);
+  EXPECT_NEAR(passingHorizon(pr), 1000.0 + 1.1 * 926.0 / 2.0 + 60.0, 1e-6);
+  // 10 km ahead at 5 m/s: 10000 s to the CPA, held to kLongestPass.
+  EXPECT_DOUBLE_EQ(passingHorizon(slowOvertaking(10000.0, 5.0)), kLongestPass);
+  // No overtaking: the prediction horizon, whatever the pass takes.
+  pr.targets[0].encounter = Encounter::HeadOn;
+  EXPECT_DOUBLE_EQ(passingHorizon(pr), pr.prediction_horizon);
+}
+
+// Rule 13(d): sought for the preferred distance (min_separation 1852 m, judged over the whole pass), the
+// net's turn is held until the overtaken ship is clear on the way back to the goal, not only until she is
+// past on the new course, though never longer than kLongestHold. Checked by the test's own flight; the
+// same turn held only until past on it (hold by hand: TCPA + the time to open to 1.1 x 1852 m + 60 s)
+// comes back closer than 1852 m.
+TEST(SafetyNet, ThePreferredTurnIsHeldUntilAnOvertakenShipIsClear) {
+  PlanningProblem pr = slowOvertaking(3000.0, 3.0);
+  pr.min_separation = 1852.0;
+  pr.prediction_horizon = passingHorizon(pr);
+  const Plan p = separationManoeuvre(pr, 0.0, "preferred", true);
+  ASSERT_EQ(p.waypoints.size(), 2u) << p.message;
+  EXPECT_GE(flownSeparation(p, pr), 1852.0) << p.message;
+
+  const Eigen::Vector2d rel_p = pr.targets[0].state.position - pr.own.position;
+  const Eigen::Vector2d rel_v =
+      pr.targets[0].state.velocity() - courseSpeedToVelocity(p.course_setpoint, 6.0);
+  const double tcpa = -rel_p.dot(rel_v) / rel_v.squaredNorm();
+  const double dcpa = std::abs(rel_p.x() * rel_v.y() - rel_p.y() * rel_v.x()) / rel_v.norm();
+  const double open = 1.1 * 1852.0;
+  const double past = tcpa + std::sqrt(std::max(0.0, open * open - dcpa * dcpa)) / rel_v.norm() + 60.0;
+  EXPECT_GT(p.waypoints[1].time, past + 1.0) << p.message;
+  EXPECT_LE(p.waypoints[1].time, kLongestHold) << p.message;
+  Plan until_past = p;
+  until_past.waypoints[1].time = past;
+  until_past.waypoints[1].position = pr.own.position + courseSpeedToVelocity(p.course_setpoint, 6.0) * past;
+  EXPECT_LT(flownSeparation(until_past, pr), 1852.0);
+}

@@ -118,7 +118,9 @@ bool keepsWay(const Plan& plan, const PlanningProblem& problem) {
 
 // The own ship has to keep out of the way of a target (Rules 13-15: she overtakes it, meets it head-on or
 // it crosses from her starboard side).
-bool keepsOutOfTheWay(const PlannerTarget& t) { return givesWay(ownRole(t.encounter)); }
+bool keepsOutOfTheWay(const PlannerTarget& t) {
+  return givesWay(ownRole(t.encounter));
+}
 
 // She keeps out of the way of some target and has no other duty: no ship she stands on for, no other
 // encounter (a target with none is only passing).
@@ -170,12 +172,15 @@ struct RuleCheck {
 };
 
 // The preferred passing distance first, in open water (kOpenWater, planning.h): in a port or a channel
-// the minimum separation is the standard, and the wider pass only costs time. The planner's plan for it,
-// else, when keeping out of the way is the own ship's only duty, the net's turn to starboard at full speed
-// (a planner's plan can fall short of it: a search horizon that ends before a slow overtaking's CPA, a
-// return leg the planner does not score). Not with other duties: a wide swing for one ship in crowded
-// waters cost arrivals (congested_port). Either is kept only when it keeps the ship's way and every shared
-// rule; `spent` gets the planner's time.
+// the minimum separation is the standard, and the wider pass only costs time. In this order:
+// 1. the planner's plan for it, when it keeps the preferred distance over the whole pass (passingHorizon:
+//    a slow overtaking lasts beyond the prediction horizon);
+// 2. when keeping out of the way is the own ship's only duty, the net's turn to starboard at full speed
+//    that does (a planner's plan can fall short: a search horizon that ends before a slow overtaking's
+//    CPA, a return leg the planner does not score). Not with other duties: a wide swing for one ship in
+//    crowded waters cost arrivals (congested_port);
+// 3. the planner's plan for it as it is, when it keeps the minimum.
+// Each only when it keeps the ship's way and every shared rule; `spent` gets the planner's time.
 std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem&)>& make,
                                   const PlanningProblem& problem, const RuleCheck& check, double& spent) {
   const double preferred = kPreferredSeparation * problem.min_separation;
@@ -185,17 +190,27 @@ std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem
   wide.min_separation = preferred;
   Plan plan = make(wide);
   spent = plan.compute_time;
-  if (plan.status == PlanStatus::Ok && keepsWay(plan, problem) && check.broken(plan).empty()) {
-    plan.message += " (for the preferred distance, " + std::to_string(static_cast<int>(preferred)) + " m)";
+  PlanningProblem whole_pass = wide;
+  whole_pass.prediction_horizon = passingHorizon(wide);
+  const bool usable = plan.status == PlanStatus::Ok && keepsWay(plan, problem) && check.broken(plan).empty();
+  const std::string label =
+      " (for the preferred distance, " + std::to_string(static_cast<int>(preferred)) + " m";
+  if (usable && planSeparation(plan, whole_pass) >= preferred) {
+    plan.message += label + ")";
     return plan;
   }
-  if (!onlyKeepsOutOfTheWay(problem))
+  if (onlyKeepsOutOfTheWay(problem)) {
+    Plan net =
+        separationManoeuvre(whole_pass, check.land_required, "preferred distance: " + plan.message, true);
+    if (keepsWay(net, problem) && planSeparation(net, whole_pass) >= preferred && check.broken(net).empty()) {
+      net.compute_time = spent;
+      return net;
+    }
+  }
+  if (!usable)
     return std::nullopt;
-  Plan net = separationManoeuvre(wide, check.land_required, "preferred distance: " + plan.message, true);
-  if (!keepsWay(net, problem) || planSeparation(net, problem) < preferred || !check.broken(net).empty())
-    return std::nullopt;
-  net.compute_time = spent;
-  return net;
+  plan.message += label + "; not kept over the whole pass)";
+  return plan;
 }
 
 }  // namespace

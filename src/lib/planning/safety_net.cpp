@@ -185,9 +185,16 @@ Plan manoeuvrePlan(const PlanningProblem& pr, double base, const Candidate& c, d
   return p;
 }
 
+// The own ship overtakes one of the targets (Rule 13).
+bool overtakes(const PlanningProblem& pr) {
+  return std::any_of(pr.targets.begin(), pr.targets.end(),
+                     [](const PlannerTarget& t) { return t.encounter == Encounter::Overtaking; });
+}
+
 // The candidate's hold times, shortest first: a short leg that gains enough room is the smaller
-// deviation; the last holds until every target is past.
-std::vector<double> holdTimes(const PlanningProblem& pr, double base, const Candidate& c) {
+// deviation; then the hold until every target is past; with `until_clear` (the preferred distance),
+// longer ones when she overtakes.
+std::vector<double> holdTimes(const PlanningProblem& pr, double base, const Candidate& c, bool until_clear) {
   const double past =
       holdUntilPast(pr, courseSpeedToVelocity(base + c.turn, pr.own.speed * c.speed_factor), pr.targets);
   std::vector<double> out;
@@ -195,6 +202,15 @@ std::vector<double> holdTimes(const PlanningProblem& pr, double base, const Cand
     if (h < past)
       out.push_back(h);
   out.push_back(past);
+  // Rule 13(d): the overtaking ship keeps clear until finally past and clear. Past with the ship on the
+  // new course is not yet past on her way back when the tracks converge slowly: longer holds, while the
+  // horizon lasts. Not for the other encounters: there the pass is quick, and a long swing only ends
+  // in a late turn back.
+  for (double h : {1.5 * past, 2.0 * past})
+    if (until_clear && overtakes(pr) && h < pr.prediction_horizon)
+      out.push_back(h);
+  if (until_clear)  // the preferred distance is not worth a swing longer than kLongestHold
+    out.erase(std::remove_if(out.begin(), out.end(), [](double h) { return h > kLongestHold; }), out.end());
   return out;
 }
 
@@ -204,6 +220,15 @@ Plan holdCoursePlan(const PlanningProblem& pr, const std::vector<PlannerTarget>&
   Plan p = manoeuvrePlan(pr, pr.own.course, {0.0, 1.0}, holdUntilPast(pr, pr.own.velocity(), until_past));
   p.message = "hold course and speed";
   return p;
+}
+
+double passingHorizon(const PlanningProblem& pr) {
+  if (!overtakes(pr))
+    return pr.prediction_horizon;
+  PlanningProblem longest = pr;
+  longest.prediction_horizon = std::max(pr.prediction_horizon, kLongestPass);
+  const double past = holdUntilPast(longest, courseSpeedToVelocity(wayCourse(pr), pr.own.speed), pr.targets);
+  return std::max(past, pr.prediction_horizon);
 }
 
 double planSeparation(const Plan& plan, const PlanningProblem& pr) {
@@ -232,7 +257,7 @@ Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const
   std::optional<std::pair<Plan, double>> first_minimum, farthest;
   const double base = wayCourse(pr);
   for (const Candidate& c : candidates(starboard_at_full_speed))
-    for (double hold : holdTimes(pr, base, c)) {
+    for (double hold : holdTimes(pr, base, c, starboard_at_full_speed)) {
       const Plan p = manoeuvrePlan(pr, base, c, hold);
       if (!clearOfLand(p))
         continue;

@@ -115,6 +115,14 @@ constexpr double kPreferredSeparation = 2.0;
 // that distance (our choice: a port basin or a channel is narrower).
 constexpr double kOpenWater = 1852.0;
 
+// [s] The longest pass the preferred distance is judged over (passingHorizon, safety_net.h): an hour,
+// our choice (a 10 kn ship overtaking a 7 kn one gains about 3 nm in it).
+constexpr double kLongestPass = 3600.0;
+
+// [s] The longest the net holds a turn for the preferred distance (not for the minimum): 20 minutes, our
+// choice. Longer swings for a wider pass cost arrivals (hu_multi_target held 30 deg for 43 minutes).
+constexpr double kLongestHold = 1200.0;
+
 struct PlannedWaypoint {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] ENU
   double time = 0.0;    // [s] planned arrival, relative to PlanningProblem::time

@@ -48,6 +48,13 @@ bool routeKeepsOffLand(const PredictedRoute& route, const PlanningProblem& probl
 // The predicted smallest distance of a plan to the problem's targets (infinity without targets).
 double planSeparation(const Plan& plan, const PlanningProblem& problem);
 
+// When the own ship overtakes a target (Rule 13), how long she takes, sailing for the next point of her
+// way at her speed, until every target is past and the range has opened to kSeparationMargin x
+// min_separation (plus a minute): at least the problem's prediction horizon, at most kLongestPass. A slow
+// overtaking lasts longer than the prediction horizon, and a plan judged over the horizon alone then
+// passes close after it. Without an overtaking, the prediction horizon.
+double passingHorizon(const PlanningProblem& problem);
+
 // Hold course and speed until every ship of `until_past` has passed her CPA (plus a minute), then steer
 // for the goal: the stand-on ship's plan (Rule 17(a)(i)).
 Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTarget>& until_past);
@@ -62,7 +69,8 @@ Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTar
 // the one that keeps the ship farthest from every target. Status Ok (Fallback when it stops); `why`
 // goes into the message. starboard_at_full_speed: the turns to starboard at full speed only (how
 // planUnderSharedRules seeks the preferred passing distance, which is worth neither the ship's way nor a
-// turn to port).
+// turn to port); when she overtakes, also held up to twice as long as until past, so that the overtaken
+// ship is clear on her way back too (Rule 13(d)); no hold longer than kLongestHold.
 Plan separationManoeuvre(const PlanningProblem& problem, double land_clearance, const std::string& why,
                          bool starboard_at_full_speed = false);
 
