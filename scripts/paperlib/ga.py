@@ -17,18 +17,27 @@ ENCOUNTERS = [("head-on TS1", 330.0, 90.0, 28.49), ("crossing TS2 + TS3", 447.0,
               ("overtaking TS4", 800.0, 100.0, 31.54)]
 CLOSEST = [("head-on TS1", "ts1", 81.53), ("crossing TS2 + TS3", "ts2", 61.24), ("crossing TS2 + TS3", "ts3", 76.92),
            ("overtaking TS4", "ts4", 43.35)]
+# Sec. 4.2: "the distance between the two ships was 400 meters" when TS1's CRI passed the threshold.
+DECISION_RANGE = 400.0
 CRI_AT = [("head-on TS1", "ts1", 330.0, 0.62), ("head-on TS1", "ts1", 426.0, 0.43), ("overtaking TS4", "ts4", 900.0, 0.44)]
 # Bands: steering, the spread of the paper's own three answers (28.5-33.0 deg); distances, half the
 # ASV's length; CRI, the paper's "similar CRI" margin.
 ANGLE_BAND, DIST_BAND, CRI_BAND = 5.0, 20.0, 0.05
-_EARLY = ("the CRI scaled to the 40.3 m ASV (wu_port's planner_params; the attention range of eq. 3 is 12 nm, "
-          "unscaled) is above 0.61 for every target already at the start, about 3 km away on collision courses, "
-          "so the GA decides at once, not at the paper's 330 s at 400 m. Paper mode's objective is the CRI alone: "
-          "the heading of least CRI is a turn of about 90 deg that opens every DCPA; afterwards no CRI passes "
-          "0.61 again, the paper's decisions at 330, 447 and 800 s never happen and every target passes wider "
-          "than in the paper. The paper gives no positions or speeds, and its CRI of 0.62 at 400 m implies a "
-          "scaling we cannot recover from the text")
-REASONS = {"head-on TS1": _EARLY, "crossing TS2 + TS3": _EARLY, "overtaking TS4": _EARLY}
+_WIDE = ("paper mode decides once, when TS1's CRI passes 0.61 at about 400 m as in the paper, and holds the angle. "
+         "The angle is the heading of least CRI (eq. 1 alone, the paper's objective) for our reconstruction of "
+         "TS1 (3 kn: the paper gives no speed), a wider turn than the paper's, so TS1 passes wider")
+_CROSSING = ("after the head-on turn the ASV steers for the goal from east of the reconstructed track, and her speed "
+             "rises after each turn (the GA's speed set-point is the current speed, and the 3-DOF ASV slows in the "
+             "turn), so TS2 and TS3 meet her later and wider than reconstructed: neither CRI reaches 0.61, no "
+             "decision is taken at 447 s")
+_OVERTAKING = ("TS4's CRI passes 0.61 before 800 s and the ASV turns away and back within the evaluator's manoeuvre "
+               "window, which records no manoeuvre for a turn undone inside it; the pass is wider than the paper's "
+               "for the same reasons as the crossing")
+_ZERO = ("Fig. 3 sets the CRI of a target already passed (TCPA < 0) to 0, and the run reports it so; the paper's "
+         "0.43/0.44 at these instants, after the CPA, is evidently plotted without it")
+REASONS = {("head-on TS1", "steering [deg, + starboard]"): _WIDE, ("head-on TS1", "closest distance to TS1 [m]"): _WIDE,
+           ("head-on TS1", "CRI of TS1 at 426 s"): _ZERO, ("overtaking TS4", "CRI of TS4 at 900 s"): _ZERO,
+           "crossing TS2 + TS3": _CROSSING, "overtaking TS4": _OVERTAKING}
 
 
 def jobs(mode="paper"):
@@ -42,6 +51,14 @@ def cri_at(risk_rows, target, t):
         if r["target"] == target and (best is None or abs(float(r["t_s"]) - t) < abs(float(best["t_s"]) - t)):
             best = r
     return float(best["cri"]) if best else None
+
+
+def first_above(risk_rows, target, threshold):
+    """The range [m] at the first sample where the target's CRI exceeds the threshold, or None."""
+    for r in risk_rows:
+        if r["target"] == target and float(r["cri"]) > threshold:
+            return float(r["range_m"])
+    return None
 
 
 def first_alteration(run, t0, window):
@@ -76,6 +93,8 @@ def report(done, mode="paper"):
             for label, name, t, paper in CRI_AT:
                 rows.append(band_row(PAPER, label, "CRI of %s at %.0f s" % (name.upper(), t), paper,
                                      cri_at(risk, name, t), CRI_BAND))
+            rows.append(band_row(PAPER, "head-on TS1", "range of TS1 when its CRI first exceeds 0.61 [m]",
+                                 DECISION_RANGE, first_above(risk, "ts1", 0.61), DIST_BAND, "m"))
             rows.append(exact_row(PAPER, "crossing TS2 + TS3", "CRI of TS3 above 0.61 at 447 s", True,
                                   (cri_at(risk, "ts3", 447.0) or 0.0) > 0.61))
             rows.append(exact_row(PAPER, "all", "collision-free", True, not r["collision"]))

@@ -216,6 +216,26 @@ TEST(GaFitnessTest, CostFallsAsTheHeadingClearsTheTarget) {
   EXPECT_NEAR(f.terms(degToRad(45.0)).turn, 0.5 * wuAsvGaConfig().turn_penalty, 1e-12);
 }
 
+// Wu et al. (2022), section 4.2: the ASV decides when TS1, 400 m dead ahead, has a CRI of 0.62. By hand,
+// eq. (1)-(6) with the ASV's scaling (D1 = DLMA = 241.8 m, D2 = 2 DLMA = attention range = 483.6 m),
+// own ship 6.1738 m/s, TS1 3 kn on 180: V_r = 7.7171 m/s, DCPA 0 (U_DCPA 1); TCPA = D / V_r,
+// t1 = 241.8 / V_r = 31.33 s, t2 = 483.6 / V_r = 62.67 s; U_B(0) = 0.5 (cos 19 + sqrt(440/289 + cos^2 19))
+// - 5/17 = 0.9559; U_K (K = 0.25, sin C = 0) = 1 / (1 + 2 / (0.25 sqrt(1.0625))) = 0.1141.
+//   400 m: U_TCPA = U_D = 0.3457, CRI = 0.40 + 0.367 x 0.3457 + 0.033 x 0.9559 + 0.167 x 0.3457 + 0.033 x
+//   0.1141 = 0.6199, above the threshold 0.61;
+//   420 m: U_TCPA = U_D = 0.2630, CRI = 0.5758, below it.
+TEST(GaFitnessTest, Ts1PassesTheThresholdAt400mAsInThePaper) {
+  PlanningProblem p = wuHeadOn();
+  ASSERT_NEAR(p.targets.at(0).state.position.y() - p.own.position.y(), 400.0, 1e-9);
+  const GaFitness at400(p, wuAsvGaConfig());
+  EXPECT_NEAR(at400.maxCri(), 0.6199, 5e-4);
+  EXPECT_TRUE(at400.triggered());
+  p.targets[0].state.position.y() = p.own.position.y() + 420.0;
+  const GaFitness at420(p, wuAsvGaConfig());
+  EXPECT_NEAR(at420.maxCri(), 0.5758, 5e-4);
+  EXPECT_FALSE(at420.triggered());
+}
+
 TEST(GaFitnessTest, GaFindsTheBestCodeOfTheExhaustiveSearch) {
   for (const PlanningProblem& p : {wuHeadOn(), wuCrossing(), wuOvertaking(), wuFourTargets()}) {
     const GaConfig cfg = wuAsvGaConfig();
@@ -279,6 +299,59 @@ TEST(GaPlannerTest, HeadOnTurnsToStarboardAndPassesPortToPort) {
   EXPECT_GT(plan.waypoints[2].time, plan.waypoints[1].time);
   EXPECT_DOUBLE_EQ(plan.speed_setpoint, p.own.speed);
   EXPECT_GT(plan.cost, 0.0);
+}
+
+// Section 4.2: the ASV decides once per encounter (330 s for TS1; 465 s again when TS2's CRI passes
+// the threshold) and holds the angle until the encounter ends. Paper mode's hold_decision does so.
+TEST(GaPlannerTest, PaperModeHoldsItsDecisionUntilANewTargetPassesTheThreshold) {
+  GaConfig cfg = wuAsvGaConfig();
+  cfg.hold_decision = true;
+  GaPlanner held(cfg), fresh(wuAsvGaConfig());
+  ASSERT_TRUE(GaConfig::paper().hold_decision);
+  ASSERT_FALSE(GaConfig{}.hold_decision);
+  const PlanningProblem p0 = wuHeadOn();
+  const Plan first = held.plan(p0);
+  ASSERT_TRUE(GaFitness(p0, cfg).triggered());
+  EXPECT_NE(first.message.find("generations"), std::string::npos) << first.message;
+
+  // 30 s later, the own ship on the decided course, TS1 46 m nearer: still above the threshold.
+  PlanningProblem p30 = p0;
+  p30.time = 30.0;
+  p30.own.course = p30.own.heading = first.course_setpoint;
+  p30.own.position += courseSpeedToVelocity(first.course_setpoint, p0.own.speed) * 30.0;
+  p30.targets[0].state.position += p0.targets[0].state.velocity() * 30.0;
+  ASSERT_TRUE(GaFitness(p30, cfg).triggered());
+  const Plan kept = held.plan(p30);
+  EXPECT_NEAR(kept.course_setpoint, first.course_setpoint, 1e-12) << kept.message;
+  EXPECT_NE(kept.message.find("held"), std::string::npos) << kept.message;
+  // Deciding again (sea mode) would steer another course from there.
+  EXPECT_GT(std::fabs(wrapPi(fresh.plan(p30).course_setpoint - first.course_setpoint)), degToRad(1.0));
+
+  // A second ship passes the threshold (crossing from starboard, 60 s from a collision): a new decision.
+  PlanningProblem p31 = p30;
+  p31.time = 31.0;
+  const double v = knotsToMps(5.0);
+  PlannerTarget ts2;
+  ts2.state = ship("ts2", 0, 0, 270.0, v);
+  const double to_goal = trueBearing(p31.own.position, p31.goal);  // the original course the CRI is judged on
+  ts2.state.position = p31.own.position + courseSpeedToVelocity(to_goal, p31.own.speed) * 60.0 -
+                       courseSpeedToVelocity(degToRad(270.0), v) * 60.0;
+  p31.targets.push_back(ts2);
+  ASSERT_GT(GaFitness(p31, cfg).targets().at(1).cri, cfg.cri_threshold);
+  const Plan again = held.plan(p31);
+  EXPECT_NE(again.message.find("generations"), std::string::npos) << again.message;
+
+  // Below the threshold the decision ends; the same situation again is decided afresh.
+  PlanningProblem clear = p0;
+  clear.time = 40.0;
+  clear.targets[0].state.position = {0.0, -300.0};  // passed, astern
+  EXPECT_NEAR(held.plan(clear).course_setpoint, 0.0, 1e-12);
+  PlanningProblem p50 = p0;
+  p50.time = 50.0;
+  EXPECT_NE(held.plan(p50).message.find("generations"), std::string::npos);
+  // An earlier time is a new run: nothing is held from the last one.
+  held.plan(p30);
+  EXPECT_NE(held.plan(p0).message.find("generations"), std::string::npos);
 }
 
 TEST(GaPlannerTest, CrossingFromStarboardPassesAstern) {

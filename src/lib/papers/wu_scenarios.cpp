@@ -19,10 +19,11 @@ CriConfig wuAsvCriConfig() {
   // DLMA (eq. 5, and D1 of eq. 3): the range two 12-kn craft close (2 x 6.17 m/s) while the ASV turns
   // 90 deg, 233 m, rounded to 6 ship lengths.
   c.dlma_m = 6.0 * kWuAsvLength;
-  // Not scaled: 12 nm, as eq. (3) prints it. A navigator watches from radar range whatever the size of
-  // the own ship, and only then is U_TCPA close to 1 at a few hundred metres, which is what the paper's
-  // CRI after the manoeuvre (0.43 head-on, 0.44 overtaking: U_DCPA = 0, U_TCPA ~ 1) requires.
-  c.attention_range_m = 12.0 * kMetresPerNauticalMile;
+  // The "12" of t2 in eq. (3) is in the same nautical miles as the domain of eq. (8)-(12), so it is
+  // scaled the same way: 12 ship lengths (483.6 m). With it the CRI of TS1, dead ahead on 180 deg at
+  // 3 kn, first exceeds the threshold 0.61 at about 400 m (0.620 at 400 m), where the paper's ASV decides
+  // with a CRI of 0.62 (section 4.2). Unscaled (12 nm), every target is above 0.61 from 3 km away.
+  c.attention_range_m = 12.0 * kWuAsvLength;
   return c;
 }
 

@@ -53,6 +53,7 @@ GaConfig GaConfig::paper() {
   c.elite_count = 0;
   c.safety_penalty = c.colregs_penalty = c.new_risk_penalty = c.turn_penalty = 0.0;
   c.cri.as_printed = true;
+  c.hold_decision = true;
   return c;
 }
 
@@ -67,6 +68,7 @@ GaConfig GaConfig::fromParams(const ParamMap& p) {
   c.elite_count = p.getInt("elite_count", c.elite_count);
   c.cri_threshold = p.getDouble("cri_threshold", c.cri_threshold);
   c.similar_cri_margin = p.getDouble("similar_cri_margin", c.similar_cri_margin);
+  c.hold_decision = p.getBool("hold_decision", c.hold_decision);
   c.safety_penalty = p.getDouble("safety_penalty", c.safety_penalty);
   c.colregs_penalty = p.getDouble("colregs_penalty", c.colregs_penalty);
   c.new_risk_penalty = p.getDouble("new_risk_penalty", c.new_risk_penalty);
@@ -379,6 +381,7 @@ GaPlanner::GaPlanner(const GaConfig& cfg) : cfg_(cfg) {
 
 void GaPlanner::configure(const ParamMap& params) {
   cfg_ = GaConfig::fromParams(params);
+  held_ = {};
 }
 
 namespace {
@@ -408,73 +411,107 @@ void appendRoute(const PlanningProblem& p, Eigen::Vector2d from, double t0, doub
   }
 }
 
-}  // namespace
-
-Plan GaPlanner::plan(const PlanningProblem& problem) {
-  const Deadline deadline(problem.time_budget);
+// The plan below the threshold (Fig. 3): the course to the goal; also the return to the original course
+// once the risk on it has cleared.
+Plan goalPlan(const PlanningProblem& problem, const GaFitness& fitness, double threshold) {
   Plan plan;
-  if (!problem.own.finite() || !std::isfinite(problem.goal.x()) || !std::isfinite(problem.goal.y())) {
-    plan.status = PlanStatus::NoSolution;
-    plan.message = "ga: own ship state or goal not finite";
-    return plan;
-  }
-  const GaFitness fitness(problem, cfg_);
-  const double speed = problem.own.speed;
-  plan.speed_setpoint = speed;  // the paper's decision is the heading only
-
+  plan.status = PlanStatus::Ok;
+  plan.speed_setpoint = problem.own.speed;  // the paper's decision is the heading only
+  plan.course_setpoint = fitness.referenceCourse();
   PlannedWaypoint start;
   start.position = problem.own.position;
-  start.speed = speed;
+  start.speed = problem.own.speed;
+  start.course = plan.course_setpoint;
+  plan.waypoints.push_back(start);
+  appendRoute(problem, start.position, 0.0, problem.own.speed, plan.waypoints);
+  plan.cost = 0.0;
+  plan.message = fitness.targets().empty()
+                     ? "ga: no targets; course to goal"
+                     : fmt("ga: largest CRI %.3f <= threshold %.2f; course to goal %.1f deg",
+                           fitness.maxCri(), threshold, radToDeg(fitness.referenceCourse()));
+  return plan;
+}
 
-  if (!fitness.triggered()) {
-    // Fig. 3: no action below the threshold; this is also the return to the original course once the
-    // risk on it has cleared.
-    plan.status = PlanStatus::Ok;
-    plan.course_setpoint = fitness.referenceCourse();
-    start.course = plan.course_setpoint;
-    plan.waypoints.push_back(start);
-    appendRoute(problem, start.position, 0.0, speed, plan.waypoints);
-    plan.cost = 0.0;
-    plan.message = fitness.targets().empty()
-                       ? "ga: no targets; course to goal"
-                       : fmt("ga: largest CRI %.3f <= threshold %.2f; course to goal %.1f deg",
-                             fitness.maxCri(), cfg_.cri_threshold, radToDeg(fitness.referenceCourse()));
-    plan.compute_time = deadline.elapsed();
-    return plan;
-  }
+std::string targetId(const PlanningProblem& problem, size_t index) {
+  const std::string& id = problem.targets[index].state.id;
+  return id.empty() ? std::to_string(index) : id;
+}
 
-  const GaRunResult run = runGa(fitness, cfg_, problem.seed, &deadline);
-  const double course = wrapTwoPi(fitness.referenceCourse() + run.alteration);
+// The evasive plan on the original course + `alteration`: own position, the end of the evasive leg (the
+// last priority target's CPA on the new heading), the remaining route and the goal.
+Plan evasivePlan(const PlanningProblem& problem, const GaFitness& fitness, double alteration, double cost,
+                 const std::string& how) {
+  const double speed = problem.own.speed;
+  const double course = wrapTwoPi(fitness.referenceCourse() + alteration);
+  Plan plan;
   plan.status = PlanStatus::Ok;
+  plan.speed_setpoint = speed;  // the paper's decision is the heading only
   plan.course_setpoint = course;
-  plan.cost = run.cost;
-
-  // The evasive leg lasts until the last priority target's CPA on the new heading.
-  const double leg_time = fitness.legTime(run.alteration);
+  plan.cost = cost;
+  const double leg_time = fitness.legTime(alteration);
   std::string ids;
-  const auto& info = fitness.targets();
-  for (size_t k = 0; k < info.size(); ++k) {
-    if (!info[k].priority)
-      continue;
-    const std::string& id = problem.targets[info[k].index].state.id;
-    ids += (ids.empty() ? "" : ",") + (id.empty() ? std::to_string(info[k].index) : id) + "(" +
-           toString(info[k].geometry.encounter) + fmt(" CRI %.3f)", info[k].cri);
-  }
+  for (const GaTargetInfo& t : fitness.targets())
+    if (t.priority)
+      ids += (ids.empty() ? "" : ",") + targetId(problem, t.index) + "(" + toString(t.geometry.encounter) +
+             fmt(" CRI %.3f)", t.cri);
+  PlannedWaypoint start, leg;
+  start.position = problem.own.position;
+  start.speed = speed;
   start.course = course;
   plan.waypoints.push_back(start);
-  PlannedWaypoint leg;
   leg.position = problem.own.position + courseSpeedToVelocity(course, speed) * leg_time;
   leg.time = leg_time;
   leg.course = course;
   leg.speed = speed;
   plan.waypoints.push_back(leg);
   appendRoute(problem, leg.position, leg_time, speed, plan.waypoints);
-
   plan.message = "ga: avoid " + ids +
                  fmt("; alteration %+.2f deg (positive = starboard) to %.1f deg; cost %.4f",
-                     radToDeg(run.alteration), radToDeg(course), run.cost) +
-                 " after " + std::to_string(run.generations) + " generations" +
-                 (run.deadline_hit ? " (time budget reached)" : "");
+                     radToDeg(alteration), radToDeg(course), cost) +
+                 " " + how;
+  return plan;
+}
+
+}  // namespace
+
+Plan GaPlanner::plan(const PlanningProblem& problem) {
+  const Deadline deadline(problem.time_budget);
+  if (!problem.own.finite() || !std::isfinite(problem.goal.x()) || !std::isfinite(problem.goal.y())) {
+    Plan plan;
+    plan.status = PlanStatus::NoSolution;
+    plan.message = "ga: own ship state or goal not finite";
+    return plan;
+  }
+  if (problem.time < last_time_)
+    held_ = {};  // a new run
+  last_time_ = problem.time;
+  const GaFitness fitness(problem, cfg_);
+  if (!fitness.triggered()) {
+    held_ = {};
+    Plan plan = goalPlan(problem, fitness, cfg_.cri_threshold);
+    plan.compute_time = deadline.elapsed();
+    return plan;
+  }
+  std::vector<std::string> above;  // the targets this decision is for
+  for (const GaTargetInfo& t : fitness.targets())
+    if (t.priority || t.cri > cfg_.cri_threshold)
+      above.push_back(targetId(problem, t.index));
+  const bool covered = std::all_of(above.begin(), above.end(), [&](const std::string& id) {
+    return std::find(held_.targets.begin(), held_.targets.end(), id) != held_.targets.end();
+  });
+  Plan plan;
+  if (cfg_.hold_decision && held_.active && covered) {
+    const double alteration = std::remainder(held_.course - fitness.referenceCourse(), kTwoPi);
+    plan = evasivePlan(problem, fitness, alteration, fitness.cost(alteration),
+                       fmt("(decided at t = %.0f s, held)", held_.time));
+  } else {
+    const GaRunResult run = runGa(fitness, cfg_, problem.seed, &deadline);
+    plan = evasivePlan(problem, fitness, run.alteration, run.cost,
+                       "after " + std::to_string(run.generations) + " generations" +
+                           (run.deadline_hit ? " (time budget reached)" : ""));
+    if (cfg_.hold_decision)
+      held_ = {true, wrapTwoPi(fitness.referenceCourse() + run.alteration), problem.time, above};
+  }
   plan.compute_time = deadline.elapsed();
   return plan;
 }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,13 @@ struct GaConfig {
   // the largest CRI ... if the CRIs of multiple target ships are similar, the CRIs are added"). The paper
   // gives no number; 0.05 is about the spread of the paper's Fig. 9 curves that it treats together.
   double similar_cri_margin = 0.05;
+  // Hold a decision (section 4.2: the ASV decides at 330 s, "then turns to the best collision avoidance
+  // angle" and keeps it until the encounter ends; a new decision at 465 s when TS2's CRI passes the
+  // threshold). true: the course decided for the targets above the threshold is kept until a target not
+  // among them passes it, or none is above it (then the course to the goal). false: decide again at every
+  // call, so that the plan follows the changing situation (sea mode; the shared rules check each plan).
+  // Paper mode: true.
+  bool hold_decision = false;
 
   // --- Penalties added to the objective (lower is better); our choices, not the paper's ---
   // [-] per target whose DCPA for the candidate falls short of the safe encounter distance SDA = d1 of
@@ -76,7 +84,7 @@ struct GaConfig {
   ColregsConfig colregs;  // encounter classification (section 2.1)
 
   // Key mode (planning.h): sea, the defaults above; paper, Wu et al. (2022) alone: the CRI objective with
-  // no elite and no penalty (the extensions' keys still override when given).
+  // no elite and no penalty, decisions held (the extensions' keys still override when given).
   static GaConfig paper();
   void validate() const;  // throws std::invalid_argument naming the bad field
   // Reads the keys above (absent keys keep the defaults); rejects unknown keys.
@@ -219,14 +227,23 @@ public:
   // Keys as GaConfig::fromParams.
   void configure(const ParamMap& params) override;
   // Below the threshold: hold the course to the goal (status Ok, cost 0). Above: run the GA and steer
-  // the original course + the best alteration; waypoints own position, the end of the evasive leg, the
-  // remaining route and the goal.
+  // the original course + the best alteration (or the held course, hold_decision); waypoints own
+  // position, the end of the evasive leg, the remaining route and the goal.
   Plan plan(const PlanningProblem& problem) override;
   std::string name() const override { return "ga"; }
   const GaConfig& config() const { return cfg_; }
 
 private:
+  // The decision in force (hold_decision): its course [rad] and the targets it was made for.
+  struct Decision {
+    bool active = false;
+    double course = 0.0;
+    double time = 0.0;  // [s] PlanningProblem::time of the decision
+    std::vector<std::string> targets;
+  };
   GaConfig cfg_;
+  Decision held_;
+  double last_time_ = -std::numeric_limits<double>::infinity();  // an earlier time: a new run
 };
 
 }  // namespace asv
