@@ -86,9 +86,11 @@ class NodeFaults(unittest.TestCase):
             self.assertTrue(plans, "no plan from the planner node")
             time.sleep(5.0)  # mid-encounter: about 100 simulated seconds on
             before = len(plans)
-            killed = time.monotonic()
             subprocess.run(["rosnode", "kill", "/planner_own"], check=True, stdout=subprocess.PIPE,
                            stderr=subprocess.STDOUT, timeout=20)
+            # From the kill (rosnode kill returns once it has told the node to shut down), not from the start
+            # of the rosnode command: that Python tool's own start-up is no part of the respawn.
+            killed = time.monotonic()
             # The new node's first plan: a plan published after the kill whose replan reason is "first
             # plan" is the respawned node's (the old one is gone).
             first = None

@@ -24,6 +24,9 @@ import unittest
 import rosunit
 import yaml
 
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))  # batch_result.py lies next to this file
+from batch_result import batch_result  # noqa: E402
+
 SEED = 7919  # the benchmark's test range (scripts/benchmark.py RANGES)
 SITUATIONS = range(10)
 PLANNERS = ["mopso", "dssa_plus"]
@@ -89,17 +92,6 @@ def run_ros(path, planner, seed):
         return json.load(f)
 
 
-def run_batch(path, planner, seed):
-    with tempfile.NamedTemporaryFile(suffix=".jsonl") as js:
-        proc = subprocess.run(["rosrun", "asv_sim", "asv_batch", "--scenario", path, "--planner", planner, "--seed",
-                               str(seed), "--quiet", "--json", js.name], stdout=subprocess.PIPE,
-                              stderr=subprocess.STDOUT, timeout=600)
-        if proc.returncode != 0:
-            raise AssertionError("asv_batch failed:\n" + proc.stdout.decode(errors="replace")[-2000:])
-        with open(js.name) as f:
-            return json.loads(f.readline())
-
-
 class Generated(unittest.TestCase):
     pass
 
@@ -108,7 +100,7 @@ def make_test(index, path, scenario, planner):
     def test(self):
         seed = SEED + index
         ros = run_ros(path, planner, seed)
-        batch = run_batch(path, planner, seed)
+        batch = batch_result(path, "--planner", planner, "--seed", str(seed), timeout=600)
         what = "situation %d (%s) with %s:\nROS   %s\nbatch %s" % (index, scenario["name"], planner, json.dumps(ros),
                                                                   json.dumps(batch))
         threshold = scenario["safety"]["min_separation_m"]

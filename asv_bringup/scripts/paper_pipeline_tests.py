@@ -31,6 +31,9 @@ import rospy
 import rosunit
 from asv_msgs.msg import RiskAssessment
 
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))  # batch_result.py lies next to this file
+from batch_result import batch_result  # noqa: E402
+
 EPOCH = 1.0e9  # sim_node's ROS time of simulation time 0
 MANOEUVRE_DELAY = 30.0  # [s, sim] risk 2 -> the first course change: replan (<= 2 s), set-point (1 s),
 #                          the evaluator's manoeuvre detection (30 s window start): documented bound
@@ -55,12 +58,7 @@ def run(scenario, planner, sim_time, risks):
 
 def batch(scenario):
     path = os.path.join(rospkg.RosPack().get_path("asv_bringup"), "scenarios", scenario + ".yaml")
-    proc = subprocess.run(["rosrun", "asv_sim", "asv_batch", "--scenario", path, "--deterministic", "--quiet"],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300)
-    out = proc.stdout.decode(errors="replace")
-    if proc.returncode != 0:
-        raise AssertionError("asv_batch failed:\n" + out[-3000:])
-    return json.loads(out.splitlines()[0])
+    return batch_result(path, "--deterministic")
 
 
 class PaperPipeline(unittest.TestCase):

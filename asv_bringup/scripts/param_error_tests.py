@@ -95,6 +95,22 @@ class ParamErrors(unittest.TestCase):
                                 "_scenario:=" + scenarios + "island.yaml", "_charts:=/nonexistent/land.geojson",
                                 *extra)
 
+    def test_spawn_agents_refuses_malformed_planner_params(self):
+        # A list where the mapping of planner name to parameters belongs: refused before any node starts,
+        # naming the key, not a Python traceback.
+        import rospkg
+        import tempfile
+        import yaml
+        with open(rospkg.RosPack().get_path("asv_bringup") + "/scenarios/dssa_two_ships.yaml") as f:
+            scenario = yaml.safe_load(f)
+        for bad, needle in [(["dssa_plus"], "planner_params must be a mapping"),
+                            ({"dssa_plus": 5}, "planner_params.dssa_plus must be a mapping")]:
+            scenario["planner_params"] = bad
+            with tempfile.NamedTemporaryFile("w", suffix=".yaml") as f:
+                yaml.safe_dump(scenario, f)
+                f.flush()
+                self.expect_refused(needle, "asv_bringup", "spawn_agents.py", "pe_spawn", "--scenario", f.name)
+
     def test_invalid_global_lockstep_parameters(self):
         try:
             rospy.set_param("/lockstep", True)

@@ -48,7 +48,12 @@ def planning_ships(scenario):
 def package_defaults(defaults, scenario, planner):
     """The package's parameter file for `planner` without the keys the scenario's planner_params set:
     the node puts its private parameters over the scenario's, so a package default would override them."""
-    own = (scenario.get("planner_params") or {}).get(planner) or {}
+    params = scenario.get("planner_params") or {}
+    if not isinstance(params, dict):
+        raise ValueError("planner_params must be a mapping of planner name to parameters, not %r" % (params,))
+    own = params.get(planner) or {}
+    if not isinstance(own, dict):
+        raise ValueError("planner_params.%s must be a mapping of parameter to value, not %r" % (planner, own))
     return {k: v for k, v in defaults.items() if k not in own}
 
 
@@ -76,7 +81,15 @@ def main():
     rospy.init_node("spawn_agents")
     with open(args.scenario) as f:
         scenario = yaml.safe_load(f)
-    ships = planning_ships(scenario)
+    try:
+        if not isinstance(scenario, dict):
+            raise ValueError("not a scenario (a YAML mapping)")
+        ships = planning_ships(scenario)
+        for _, planner in ships:
+            package_defaults({}, scenario, args.planner or planner)  # planner_params' shape, before any launch
+    except ValueError as e:
+        rospy.logfatal("spawn_agents: %s: %s", args.scenario, e)
+        return 1
     if args.ships:
         wanted = [s.strip() for s in args.ships.split(",") if s.strip()]
         unknown = [s for s in wanted if s not in [n for n, _ in ships]]

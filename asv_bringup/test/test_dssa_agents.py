@@ -21,7 +21,7 @@ drop_ship, drop_from, drop_until [s, ROS time], batch_planner.
 """
 import json
 import math
-import subprocess
+import os
 import sys
 import threading
 import time
@@ -32,20 +32,12 @@ import rostest
 import yaml
 from asv_msgs.msg import Intention, SimEvent, TargetArray
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "scripts"))
+from batch_result import batch_result  # noqa: E402
+
 SIM_EPOCH = 1.0e9  # ROS time of simulation time 0 (asv_sim sim_node)
 TIME_BAND = 0.10  # ROS against asv_batch, each ship's time to her goal: one 1 s step in the paper's 20
 GAP_BAND = 0.25  # ... and the closest approach of two ships: the exchange's timing moves a decision a little
-
-
-def batch_run(scenario_file, planner):
-    """The scenario through asv_batch, every planning ship running `planner` (its result JSON)."""
-    proc = subprocess.run(["rosrun", "asv_sim", "asv_batch", "--scenario", scenario_file, "--planner", planner,
-                           "--agents", planner, "--seed", "1", "--quiet"], stdout=subprocess.PIPE,
-                          stderr=subprocess.STDOUT, timeout=300)
-    out = proc.stdout.decode(errors="replace")
-    if proc.returncode != 0:
-        raise AssertionError("asv_batch failed:\n" + out[-3000:])
-    return json.loads(out.splitlines()[0])
 
 
 def straight_min_distance(a, b):
@@ -156,7 +148,8 @@ class DssaAgents(unittest.TestCase):
             self.agree_with_batch(arrivals)
 
     def agree_with_batch(self, arrivals):
-        ref = batch_run(self.scenario_file, self.batch_planner)
+        ref = batch_result(self.scenario_file, "--planner", self.batch_planner, "--agents", self.batch_planner,
+                           "--seed", "1")
         ships = {s["name"]: s for s in ref["ships"]}
         rospy.loginfo("test_dssa_agents: asv_batch: times to goal %s, closest %.0f m",
                       {n: s["time_to_goal_s"] for n, s in ships.items()}, ref["min_separation_m"])

@@ -237,9 +237,11 @@ TEST(SafetyNet, ThePreferredTurnIsHeldUntilAnOvertakenShipIsClear) {
   PlanningProblem pr = slowOvertaking(3000.0, 3.0);
   pr.min_separation = 1852.0;
   pr.prediction_horizon = passingHorizon(pr);
-  const Plan p = separationManoeuvre(pr, 0.0, "preferred", true);
+  double predicted = 0.0;
+  const Plan p = separationManoeuvre(pr, 0.0, "preferred", true, &predicted);
   ASSERT_EQ(p.waypoints.size(), 2u) << p.message;
   EXPECT_GE(flownSeparation(p, pr), 1852.0) << p.message;
+  EXPECT_NEAR(predicted, flownSeparation(p, pr), 1.0) << p.message;  // what the net reports is what it flies
 
   const Eigen::Vector2d rel_p = pr.targets[0].state.position - pr.own.position;
   const Eigen::Vector2d rel_v =

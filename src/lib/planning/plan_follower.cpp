@@ -177,8 +177,8 @@ struct RuleCheck {
 //    a slow overtaking lasts beyond the prediction horizon);
 // 2. when keeping out of the way is the own ship's only duty, the net's turn to starboard at full speed
 //    that does (a planner's plan can fall short: a search horizon that ends before a slow overtaking's
-//    CPA, a return leg the planner does not score). Not with other duties: a wide swing for one ship in
-//    crowded waters cost arrivals (congested_port);
+//    CPA, a return leg the planner does not score). Not with other duties: in crowded waters a wide
+//    swing for one ship runs into the others and costs arrivals;
 // 3. the planner's plan for it as it is, when it keeps the minimum.
 // Each only when it keeps the ship's way and every shared rule; `spent` gets the planner's time.
 std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem&)>& make,
@@ -200,9 +200,10 @@ std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem
     return plan;
   }
   if (onlyKeepsOutOfTheWay(problem)) {
-    Plan net =
-        separationManoeuvre(whole_pass, check.land_required, "preferred distance: " + plan.message, true);
-    if (keepsWay(net, problem) && planSeparation(net, whole_pass) >= preferred && check.broken(net).empty()) {
+    double predicted = 0.0;
+    Plan net = separationManoeuvre(whole_pass, check.land_required, "preferred distance: " + plan.message,
+                                   true, &predicted);
+    if (keepsWay(net, problem) && predicted >= preferred && check.broken(net).empty()) {
       net.compute_time = spent;
       return net;
     }

@@ -198,19 +198,23 @@ std::vector<double> holdTimes(const PlanningProblem& pr, double base, const Cand
   const double past =
       holdUntilPast(pr, courseSpeedToVelocity(base + c.turn, pr.own.speed * c.speed_factor), pr.targets);
   std::vector<double> out;
+  // The preferred distance is not worth a swing longer than kLongestHold.
+  auto add = [&](double h) {
+    if (!until_clear || h <= kLongestHold)
+      out.push_back(h);
+  };
   for (double h : {kShortestHold, 2.0 * kShortestHold, 600.0})
     if (h < past)
-      out.push_back(h);
-  out.push_back(past);
+      add(h);
+  add(past);
   // Rule 13(d): the overtaking ship keeps clear until finally past and clear. Past with the ship on the
   // new course is not yet past on her way back when the tracks converge slowly: longer holds, while the
   // horizon lasts. Not for the other encounters: there the pass is quick, and a long swing only ends
   // in a late turn back.
-  for (double h : {1.5 * past, 2.0 * past})
-    if (until_clear && overtakes(pr) && h < pr.prediction_horizon)
-      out.push_back(h);
-  if (until_clear)  // the preferred distance is not worth a swing longer than kLongestHold
-    out.erase(std::remove_if(out.begin(), out.end(), [](double h) { return h > kLongestHold; }), out.end());
+  if (until_clear && overtakes(pr))
+    for (double h : {1.5 * past, 2.0 * past})
+      if (h < pr.prediction_horizon)
+        add(h);
   return out;
 }
 
@@ -249,9 +253,14 @@ Plan described(Plan p, const PlanningProblem& pr, double clearance, const std::s
 }  // namespace
 
 Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const std::string& why,
-                         bool starboard_at_full_speed) {
+                         bool starboard_at_full_speed, double* predicted) {
   const double wanted = kSeparationMargin * pr.min_separation;
   auto clearOfLand = [&](const Plan& p) { return routeKeepsOffLand(planRoute(p, pr), pr, land_clearance); };
+  auto chosen = [&](const Plan& p, double clearance) {
+    if (predicted)
+      *predicted = clearance;
+    return described(p, pr, clearance, why);
+  };
   // The first candidate that keeps the margin, in the order of preference; else the first that keeps
   // the minimum; else the one that keeps farthest, or stopping when that keeps farther still.
   std::optional<std::pair<Plan, double>> first_minimum, farthest;
@@ -263,18 +272,18 @@ Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const
         continue;
       const double clearance = planSeparation(p, pr);
       if (clearance >= wanted)
-        return described(p, pr, clearance, why);
+        return chosen(p, clearance);
       if (clearance >= pr.min_separation && !first_minimum)
         first_minimum.emplace(p, clearance);
       if (!farthest || clearance > farthest->second)
         farthest.emplace(p, clearance);
     }
   if (first_minimum)
-    return described(first_minimum->first, pr, first_minimum->second, why);
+    return chosen(first_minimum->first, first_minimum->second);
   const double stop_clearance = routeClearance({{pr.own.position}, {}}, pr.targets, pr.prediction_horizon);
   if (!farthest || stop_clearance > farthest->second)
-    return described(manoeuvrePlan(pr, base, {0.0, 0.0}, 0.0), pr, stop_clearance, why);
-  return described(farthest->first, pr, farthest->second, why);
+    return chosen(manoeuvrePlan(pr, base, {0.0, 0.0}, 0.0), stop_clearance);
+  return chosen(farthest->first, farthest->second);
 }
 
 }  // namespace asv

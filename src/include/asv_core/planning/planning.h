@@ -120,7 +120,8 @@ constexpr double kOpenWater = 1852.0;
 constexpr double kLongestPass = 3600.0;
 
 // [s] The longest the net holds a turn for the preferred distance (not for the minimum): 20 minutes, our
-// choice. Longer swings for a wider pass cost arrivals (hu_multi_target held 30 deg for 43 minutes).
+// choice. A longer swing for a wider pass costs more time than the wider pass is worth, and can keep the
+// ship from her goal.
 constexpr double kLongestHold = 1200.0;
 
 struct PlannedWaypoint {
