@@ -26,13 +26,12 @@ ANGLE_BAND, DIST_BAND, CRI_BAND = 5.0, 20.0, 0.05
 _WIDE = ("paper mode decides once, when TS1's CRI passes 0.61 at about 400 m as in the paper, and holds the angle. "
          "The angle is the heading of least CRI (eq. 1 alone, the paper's objective) for our reconstruction of "
          "TS1 (3 kn: the paper gives no speed), a wider turn than the paper's, so TS1 passes wider")
-_CROSSING = ("after the head-on turn the ASV steers for the goal from east of the reconstructed track, and her speed "
-             "rises after each turn (the GA's speed set-point is the current speed, and the 3-DOF ASV slows in the "
-             "turn), so TS2 and TS3 meet her later and wider than reconstructed: neither CRI reaches 0.61, no "
-             "decision is taken at 447 s")
-_OVERTAKING = ("TS4's CRI passes 0.61 before 800 s and the ASV turns away and back within the evaluator's manoeuvre "
-               "window, which records no manoeuvre for a turn undone inside it; the pass is wider than the paper's "
-               "for the same reasons as the crossing")
+_CROSSING = ("after the head-on turn the ASV steers for the goal from east of the reconstructed track, so TS2 and TS3 "
+             "meet her wider than reconstructed (the paper gives neither their positions nor their speeds): neither "
+             "CRI reaches 0.61 (TS3's comes close), and no decision is taken at 447 s")
+_OVERTAKING = ("TS4's CRI passes 0.61 a little before 800 s and the ASV decides then; the angle of least CRI for our "
+               "reconstruction of TS4 (5 kn on 010: the paper gives neither) is smaller than the paper's, and the ASV, "
+               "east of the reconstructed track after the head-on turn, passes wider")
 _ZERO = ("Fig. 3 sets the CRI of a target already passed (TCPA < 0) to 0, and the run reports it so; the paper's "
          "0.43/0.44 at these instants, after the CPA, is evidently plotted without it")
 REASONS = {("head-on TS1", "steering [deg, + starboard]"): _WIDE, ("head-on TS1", "closest distance to TS1 [m]"): _WIDE,

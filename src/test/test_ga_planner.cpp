@@ -354,6 +354,23 @@ TEST(GaPlannerTest, PaperModeHoldsItsDecisionUntilANewTargetPassesTheThreshold) 
   EXPECT_NE(held.plan(p0).message.find("generations"), std::string::npos);
 }
 
+// The decision is the heading only (section 4.2): the speed asked for is the cruise speed, not the
+// speed the ship has after a turn (fed back, that drifts upward under an integrating speed control).
+TEST(GaPlannerTest, KeepsTheCruiseSpeed) {
+  GaPlanner planner(wuAsvGaConfig());
+  PlanningProblem p = wuHeadOn();
+  p.cruise_speed = 5.5;
+  const Plan evade = planner.plan(p);
+  ASSERT_GT(std::fabs(alterationOf(evade, p)), degToRad(5.0));
+  EXPECT_DOUBLE_EQ(evade.speed_setpoint, 5.5);
+  for (const PlannedWaypoint& w : evade.waypoints)
+    EXPECT_DOUBLE_EQ(w.speed, 5.5);
+  p.targets.clear();
+  EXPECT_DOUBLE_EQ(planner.plan(p).speed_setpoint, 5.5);
+  p.cruise_speed = 0.0;  // unknown: the own speed
+  EXPECT_DOUBLE_EQ(planner.plan(p).speed_setpoint, kWuAsvSpeed);
+}
+
 TEST(GaPlannerTest, CrossingFromStarboardPassesAstern) {
   // Target from 050 deg relative heading 270 at 5 kn, on a collision course 60 s away.
   const double v = knotsToMps(5.0), T = 60.0;

@@ -66,6 +66,22 @@ TEST(PlanFollower, PassesTheMinimumSeparationToThePlanners) {
   EXPECT_DOUBLE_EQ(follower().buildProblem(0.0, {}).min_separation, 926.0);
 }
 
+// The cruise speed (here the own speed at the first update, 6 m/s) goes to the planners; a ship that
+// is faster after a turn keeps her speed as own.speed, but a plan that keeps her speed asks for 6 m/s.
+TEST(PlanFollower, PassesTheCruiseSpeedToThePlanners) {
+  asv::PlanFollower f = follower();
+  asv::ShipState faster = own();
+  faster.speed = 6.4;
+  f.updateOwn(faster);
+  const asv::PlanningProblem pr = f.buildProblem(0.0, {});
+  EXPECT_DOUBLE_EQ(pr.cruise_speed, 6.0);
+  EXPECT_DOUBLE_EQ(pr.own.speed, 6.4);
+  EXPECT_DOUBLE_EQ(asv::keptSpeed(pr), 6.0);
+  asv::PlanningProblem unknown = pr;
+  unknown.cruise_speed = 0.0;
+  EXPECT_DOUBLE_EQ(asv::keptSpeed(unknown), 6.4);
+}
+
 // replan_on_risk false (plan once, as Lazarowska 2015): a far target's rise from 0 to 2 no longer
 // replans a plan that stays safe; a plan predicted to pass inside the minimum separation still does.
 TEST(PlanFollower, PlanOnceIgnoresRisingRiskButNotAnUnsafePlan) {

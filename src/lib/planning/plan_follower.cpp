@@ -303,6 +303,7 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   pr.time = now;
   pr.own = *own_;
   pr.own.speed = std::max(pr.own.speed, cfg_.cruise_speed);  // plan for the cruising speed
+  pr.cruise_speed = cfg_.cruise_speed;
   pr.limits = cfg_.limits;
   pr.goal = goalOrAhead();
   pr.obstacles = obstacles_;

@@ -83,6 +83,10 @@ struct PlanningProblem {
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // [m] final waypoint (ENU)
   std::vector<Eigen::Vector2d> route;  // [m] waypoints still to pass before the goal (may be empty)
   std::vector<PlannerTarget> targets;
+  // [m/s] the speed the ship sails at when nothing is in her way (the follower's cruise speed; 0:
+  // unknown). A plan that keeps her speed asks for this rather than for own.speed: the speed she has
+  // after a turn, fed back as the set-point, drifts upward under an integrating speed control.
+  double cruise_speed = 0.0;
   // Targets the own ship stands on for (Rule 17(a)(i): left out of `targets` while the give-way ship is
   // expected to act). Not for the planners: the shared rules refuse a plan that closes them more than
   // holding course would (planUnderSharedRules).
@@ -101,6 +105,11 @@ struct PlanningProblem {
   double min_obstacle_clearance = 0.0;
   double prediction_horizon = 1200.0;  // [s] how far ahead a plan without waypoints is followed
 };
+
+// The speed a plan that keeps the ship's speed asks for: PlanningProblem::cruise_speed, else own.speed.
+inline double keptSpeed(const PlanningProblem& p) {
+  return p.cruise_speed > 0.0 ? p.cruise_speed : p.own.speed;
+}
 
 // Margin on PlanningProblem::min_separation: plans are made at kinematic constant-velocity prediction,
 // but the ship follows them with turn delays and the targets are tracked with noise. Our choice (10 %).

@@ -416,14 +416,14 @@ void appendRoute(const PlanningProblem& p, Eigen::Vector2d from, double t0, doub
 Plan goalPlan(const PlanningProblem& problem, const GaFitness& fitness, double threshold) {
   Plan plan;
   plan.status = PlanStatus::Ok;
-  plan.speed_setpoint = problem.own.speed;  // the paper's decision is the heading only
+  plan.speed_setpoint = keptSpeed(problem);  // the paper's decision is the heading only
   plan.course_setpoint = fitness.referenceCourse();
   PlannedWaypoint start;
   start.position = problem.own.position;
-  start.speed = problem.own.speed;
+  start.speed = plan.speed_setpoint;
   start.course = plan.course_setpoint;
   plan.waypoints.push_back(start);
-  appendRoute(problem, start.position, 0.0, problem.own.speed, plan.waypoints);
+  appendRoute(problem, start.position, 0.0, plan.speed_setpoint, plan.waypoints);
   plan.cost = 0.0;
   plan.message = fitness.targets().empty()
                      ? "ga: no targets; course to goal"
@@ -441,7 +441,7 @@ std::string targetId(const PlanningProblem& problem, size_t index) {
 // last priority target's CPA on the new heading), the remaining route and the goal.
 Plan evasivePlan(const PlanningProblem& problem, const GaFitness& fitness, double alteration, double cost,
                  const std::string& how) {
-  const double speed = problem.own.speed;
+  const double speed = keptSpeed(problem);
   const double course = wrapTwoPi(fitness.referenceCourse() + alteration);
   Plan plan;
   plan.status = PlanStatus::Ok;
