@@ -229,7 +229,7 @@ StaticObstacle coast(Draw& d, const ScenarioShip& own, double route_length, doub
 const char* behaviourText(Behaviour b) {
   switch (b) {
     case Behaviour::GiveWay:
-      return "gives way by the rules (40 deg to starboard)";
+      return "gives way by the rules (40 deg or more to starboard, to pass 1 nm off)";
     case Behaviour::NonCompliant:
       return "breaks the rules: stands on although she should give way";
     case Behaviour::PortTurn:

@@ -165,10 +165,24 @@ bool Simulation::setWaypoints(const std::string& ship, const std::vector<Eigen::
   return false;
 }
 
+// The give_way ship's alteration to starboard: the smallest of give_way_alteration_deg, +10, ... 90 deg
+// that, with the other ship holding on, passes her at give_way_dcpa or more (Rule 16: early and
+// substantial action to keep well clear, here clear of her own risk threshold); 90 deg when none does.
+// A port_turn ship breaks the rules: she makes give_way_alteration_deg to port, whatever it passes.
+double Simulation::giveWayAlteration(const SimVessel& v, const ShipState& other) const {
+  const double first = cfg_.traffic.give_way_alteration_deg;
+  if (v.behaviour == Behaviour::PortTurn)
+    return -degToRad(first);
+  for (double deg = first; deg < 90.0; deg += 10.0) {
+    const Eigen::Vector2d velocity = courseSpeedToVelocity(v.cruise_course + degToRad(deg), v.cruise_speed);
+    const Cpa cpa = computeCpa(v.position(), velocity, other.position, other.velocity());
+    if (cpa.dcpa >= cfg_.traffic.give_way_dcpa || cpa.tcpa < 0.0)
+      return degToRad(deg);
+  }
+  return degToRad(90.0);
+}
+
 void Simulation::giveWayLogic(SimVessel& v, size_t index) {
-  // A port_turn ship makes the same alteration to port.
-  const double side = v.behaviour == Behaviour::PortTurn ? -1.0 : 1.0;
-  const double alteration = side * degToRad(cfg_.traffic.give_way_alteration_deg);
   ShipState me = v.shipState();
   if (v.giving_way) {
     // Stand back on once the other ship is past: judged on the original course, so the ship does not
@@ -194,7 +208,7 @@ void Simulation::giveWayLogic(SimVessel& v, size_t index) {
     if (g.role == OwnRole::GiveWay || g.role == OwnRole::BothGiveWay) {
       v.giving_way = true;
       v.giving_way_to = vessels_[j].name;
-      v.course_sp = wrapTwoPi(v.cruise_course + alteration);  // to starboard (Rules 14, 15, 16)
+      v.course_sp = wrapTwoPi(v.cruise_course + giveWayAlteration(v, other));  // Rules 14, 15, 16
       return;
     }
   }

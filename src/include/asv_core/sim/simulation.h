@@ -22,8 +22,10 @@ namespace asv {
 
 struct TrafficConfig {
   // give_way behaviour: a COLREGs-compliant target that, when it is the give-way vessel (Rules 14-16)
-  // and a risk of collision exists (Hu eq. 1 with these thresholds), alters to starboard in good time.
-  double give_way_alteration_deg = 40.0;  // [deg] >= 30 so the alteration is readily apparent (Rule 8(b))
+  // and a risk of collision exists (Hu eq. 1 with these thresholds), alters to starboard in good time,
+  // enough to pass at give_way_dcpa or more (Simulation::giveWayAlteration).
+  double give_way_alteration_deg = 40.0;  // [deg] the smallest alteration, >= 30 so that it is readily
+                                          // apparent (Rule 8(b)); a port_turn ship's whole alteration
   double give_way_tcpa = 900.0;           // [s] act when the CPA is this close in time (15 min) ...
   double give_way_dcpa = 1852.0;          // [m] ... and closer than this (1 nm)
   double waypoint_acceptance = 200.0;     // [m] kinematic waypoint following: switch within this radius
@@ -137,6 +139,7 @@ private:
   void steer(SimVessel& v);
   void replayTrack(SimVessel& v, double t);
   void giveWayLogic(SimVessel& v, size_t index);
+  double giveWayAlteration(const SimVessel& v, const ShipState& other) const;
   void referee();
   void refereeLand();
 
