@@ -45,15 +45,22 @@ def planning_ships(scenario):
     return out
 
 
-def package_defaults(defaults, scenario, planner):
-    """The package's parameter file for `planner` without the keys the scenario's planner_params set:
-    the node puts its private parameters over the scenario's, so a package default would override them."""
+def planner_params(scenario, planner):
+    """The scenario's planner_params for `planner` (a mapping, empty when it sets none); ValueError when
+    planner_params or its entry for `planner` is not a mapping."""
     params = scenario.get("planner_params") or {}
     if not isinstance(params, dict):
         raise ValueError("planner_params must be a mapping of planner name to parameters, not %r" % (params,))
     own = params.get(planner) or {}
     if not isinstance(own, dict):
         raise ValueError("planner_params.%s must be a mapping of parameter to value, not %r" % (planner, own))
+    return own
+
+
+def package_defaults(defaults, scenario, planner):
+    """The package's parameter file for `planner` without the keys the scenario's planner_params set:
+    the node puts its private parameters over the scenario's, so a package default would override them."""
+    own = planner_params(scenario, planner)
     return {k: v for k, v in defaults.items() if k not in own}
 
 
@@ -86,7 +93,7 @@ def main():
             raise ValueError("not a scenario (a YAML mapping)")
         ships = planning_ships(scenario)
         for _, planner in ships:
-            package_defaults({}, scenario, args.planner or planner)  # planner_params' shape, before any launch
+            planner_params(scenario, args.planner or planner)  # its shape, before any node starts
     except ValueError as e:
         rospy.logfatal("spawn_agents: %s: %s", args.scenario, e)
         return 1

@@ -17,19 +17,21 @@ ENCOUNTERS = [("head-on TS1", 330.0, 90.0, 28.49), ("crossing TS2 + TS3", 447.0,
               ("overtaking TS4", 800.0, 100.0, 31.54)]
 CLOSEST = [("head-on TS1", "ts1", 81.53), ("crossing TS2 + TS3", "ts2", 61.24), ("crossing TS2 + TS3", "ts3", 76.92),
            ("overtaking TS4", "ts4", 43.35)]
-# Sec. 4.2: "the distance between the two ships was 400 meters" when TS1's CRI passed the threshold.
+# Sec. 4.2: the CRI threshold above which the ASV acts, and "the distance between the two ships was 400
+# meters" when TS1's CRI passed it.
+THRESHOLD = 0.61
 DECISION_RANGE = 400.0
 CRI_AT = [("head-on TS1", "ts1", 330.0, 0.62), ("head-on TS1", "ts1", 426.0, 0.43), ("overtaking TS4", "ts4", 900.0, 0.44)]
 # Bands: steering, the spread of the paper's own three answers (28.5-33.0 deg); distances, half the
 # ASV's length; CRI, the paper's "similar CRI" margin.
 ANGLE_BAND, DIST_BAND, CRI_BAND = 5.0, 20.0, 0.05
-_WIDE = ("paper mode decides once, when TS1's CRI passes 0.61 at about 400 m as in the paper, and holds the angle. "
+_WIDE = (f"paper mode decides once, when TS1's CRI passes {THRESHOLD} at about 400 m as in the paper, and holds the angle. "
          "The angle is the heading of least CRI (eq. 1 alone, the paper's objective) for our reconstruction of "
          "TS1 (3 kn: the paper gives no speed), a wider turn than the paper's, so TS1 passes wider")
 _CROSSING = ("after the head-on turn the ASV steers for the goal from east of the reconstructed track, so TS2 and TS3 "
              "meet her wider than reconstructed (the paper gives neither their positions nor their speeds): neither "
-             "CRI reaches 0.61 (TS3's comes close), and no decision is taken at 447 s")
-_OVERTAKING = ("TS4's CRI passes 0.61 a little before 800 s and the ASV decides then; the angle of least CRI for our "
+             f"CRI reaches {THRESHOLD} (TS3's comes close), and no decision is taken at 447 s")
+_OVERTAKING = (f"TS4's CRI passes {THRESHOLD} a little before 800 s and the ASV decides then; the angle of least CRI for our "
                "reconstruction of TS4 (5 kn on 010: the paper gives neither) is smaller than the paper's, and the ASV, "
                "east of the reconstructed track after the head-on turn, passes wider")
 _ZERO = ("Fig. 3 sets the CRI of a target already passed (TCPA < 0) to 0, and the run reports it so; the paper's "
@@ -92,9 +94,9 @@ def report(done, mode="paper"):
             for label, name, t, paper in CRI_AT:
                 rows.append(band_row(PAPER, label, "CRI of %s at %.0f s" % (name.upper(), t), paper,
                                      cri_at(risk, name, t), CRI_BAND))
-            rows.append(band_row(PAPER, "head-on TS1", "range of TS1 when its CRI first exceeds 0.61 [m]",
-                                 DECISION_RANGE, first_above(risk, "ts1", 0.61), DIST_BAND, "m"))
-            rows.append(exact_row(PAPER, "crossing TS2 + TS3", "CRI of TS3 above 0.61 at 447 s", True,
-                                  (cri_at(risk, "ts3", 447.0) or 0.0) > 0.61))
+            rows.append(band_row(PAPER, "head-on TS1", f"range of TS1 when its CRI first exceeds {THRESHOLD} [m]",
+                                 DECISION_RANGE, first_above(risk, "ts1", THRESHOLD), DIST_BAND, "m"))
+            rows.append(exact_row(PAPER, "crossing TS2 + TS3", f"CRI of TS3 above {THRESHOLD} at 447 s", True,
+                                  (cri_at(risk, "ts3", 447.0) or 0.0) > THRESHOLD))
             rows.append(exact_row(PAPER, "all", "collision-free", True, not r["collision"]))
     return rows, lines

@@ -500,7 +500,7 @@ Plan GaPlanner::plan(const PlanningProblem& problem) {
     return std::find(held_.targets.begin(), held_.targets.end(), id) != held_.targets.end();
   });
   Plan plan;
-  if (cfg_.hold_decision && held_.active && covered) {
+  if (cfg_.hold_decision && !held_.targets.empty() && covered) {
     const double alteration = std::remainder(held_.course - fitness.referenceCourse(), kTwoPi);
     plan = evasivePlan(problem, fitness, alteration, fitness.cost(alteration),
                        fmt("(decided at t = %.0f s, held)", held_.time));
@@ -510,7 +510,7 @@ Plan GaPlanner::plan(const PlanningProblem& problem) {
                        "after " + std::to_string(run.generations) + " generations" +
                            (run.deadline_hit ? " (time budget reached)" : ""));
     if (cfg_.hold_decision)
-      held_ = {true, wrapTwoPi(fitness.referenceCourse() + run.alteration), problem.time, above};
+      held_ = {wrapTwoPi(fitness.referenceCourse() + run.alteration), problem.time, above};
   }
   plan.compute_time = deadline.elapsed();
   return plan;

@@ -234,9 +234,9 @@ public:
   const GaConfig& config() const { return cfg_; }
 
 private:
-  // The decision in force (hold_decision): its course [rad] and the targets it was made for.
+  // The decision in force (hold_decision): its course [rad] and the targets it was made for (none: no
+  // decision; a decision has at least its priority target).
   struct Decision {
-    bool active = false;
     double course = 0.0;
     double time = 0.0;  // [s] PlanningProblem::time of the decision
     std::vector<std::string> targets;
