@@ -252,6 +252,67 @@ TEST(DssaColregs, GiveWayInHeadOnSearchesStarboardOnly) {
 
 // Rules 14/15 guard: a fake planner that alters 20 deg to port on its first seed and 20 deg to
 // starboard on any other.
+// Rule 17(c): a ship crossing from the port side that did not give way is now in the problem (she is no
+// longer stood on for); a planner that answers only with a turn to port (20 deg, which keeps 926 m from
+// this ship: she passes ahead of the own ship's new track) is refused, retried, and replaced by the
+// net's manoeuvre, which turns to starboard and keeps the minimum with its margin.
+TEST(PlanUnderSharedRules, NoTurnToPortForAShipOnThePortSide) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {0.0, 20000.0};
+  pr.min_separation = 926.0;
+  pr.targets = {standOnTarget(false, asv::RiskLevel::Collision)};
+  int calls = 0;
+  auto port = [&](const asv::PlanningProblem& q) {
+    ++calls;
+    asv::Plan plan;
+    plan.status = asv::PlanStatus::Ok;
+    plan.course_setpoint = asv::wrapTwoPi(q.own.course - asv::degToRad(20.0));
+    plan.speed_setpoint = q.own.speed;
+    return plan;
+  };
+  ASSERT_GE(asv::planSeparation(port(pr), pr), 926.0);  // the port plan is refused for its side alone
+  calls = 0;
+  const asv::Plan p = asv::planUnderSharedRules(port, pr);
+  EXPECT_EQ(calls, 5);  // for the preferred distance (open water), then the plan and 3 retries
+  EXPECT_GE(std::remainder(p.course_setpoint - pr.own.course, 2 * asv::kPi), asv::degToRad(30.0) - 1e-9)
+      << p.message;
+  EXPECT_NE(p.message.find("Rule 17(c)"), std::string::npos) << p.message;
+  EXPECT_GE(asv::planSeparation(p, pr), 1.1 * 926.0) << p.message;
+}
+
+// The first alteration is the first leg that turns, not the set-point of a leg that holds on. A ship met
+// head-on 6000 m ahead, both at 6 m/s: her CPA is at 500 s. By hand, each plan from the origin (north):
+// ahead 1200 m (200 s), then 330 deg: to port; 030 first and 330 after: to starboard; ahead 3600 m
+// (600 s, past the CPA) and then 330: the later leg is the way on, no alteration.
+TEST(PlanUnderSharedRules, TheFirstAlterationIsTheFirstLegThatTurns) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.state.position = {0.0, 6000.0};
+  t.state.course = t.state.heading = asv::kPi;
+  t.state.speed = 6.0;
+  t.encounter = asv::Encounter::HeadOn;
+  pr.targets = {t};
+  auto plan = [](std::vector<std::pair<double, double>> legs) {  // (course deg, seconds) at 6 m/s
+    asv::Plan p;
+    p.status = asv::PlanStatus::Ok;
+    p.course_setpoint = asv::degToRad(legs.front().first);
+    asv::PlannedWaypoint w;
+    p.waypoints = {w};
+    for (const auto& [course, seconds] : legs) {
+      w.position += asv::courseSpeedToVelocity(asv::degToRad(course), 6.0) * seconds;
+      w.time += seconds;
+      p.waypoints.push_back(w);
+    }
+    return p;
+  };
+  EXPECT_TRUE(asv::firstAlterationToPort(plan({{0.0, 200.0}, {330.0, 300.0}}), pr));
+  EXPECT_FALSE(asv::firstAlterationToPort(plan({{30.0, 200.0}, {330.0, 300.0}}), pr));
+  EXPECT_FALSE(asv::firstAlterationToPort(plan({{0.0, 600.0}, {330.0, 300.0}}), pr));
+}
+
 TEST(PlanUnderSharedRules, RetriesAPortPlanWhenGivingWay) {
   asv::PlanningProblem pr;
   pr.own = own();

@@ -257,3 +257,31 @@ TEST(SafetyNet, ThePreferredTurnIsHeldUntilAnOvertakenShipIsClear) {
   until_past.waypoints[1].position = pr.own.position + courseSpeedToVelocity(p.course_setpoint, 6.0) * past;
   EXPECT_LT(flownSeparation(until_past, pr), 1852.0);
 }
+
+// Rule 13(d) as a seaman overtakes: when no turn held at most kLongestHold and then undone towards the
+// goal keeps the preferred distance over the whole of a slow pass (6 m/s past a ship 3000 m ahead at
+// 4.5 m/s: the CPA is 2000 s away), the net offsets to one side and runs parallel to the way until the
+// overtaken ship is clear. By hand: 30 deg to starboard until 1.1 x 1.1 x 1852 = 2240.9 m off the way
+// (2240.9 / (6 sin 30 deg) = 747.0 s), then north; the overtaken ship stays on x = 0, so the pass is
+// the offset, 2240.9 m. With the ship 300 m to starboard of the way, the offset is to port, away from her.
+TEST(SafetyNet, ASlowOvertakingIsPassedOnAnOffsetParallelToTheWay) {
+  PlanningProblem pr = slowOvertaking(3000.0, 4.5);
+  pr.min_separation = 1852.0;
+  pr.prediction_horizon = passingHorizon(pr);
+  double predicted = 0.0;
+  const Plan p = separationManoeuvre(pr, 0.0, "preferred", true, &predicted);
+  ASSERT_EQ(p.waypoints.size(), 3u) << p.message;
+  EXPECT_NEAR(radToDeg(std::remainder(p.course_setpoint, kTwoPi)), 30.0, 1e-9) << p.message;
+  EXPECT_NEAR(p.waypoints[1].position.x(), 2240.92, 1e-6);
+  EXPECT_NEAR(p.waypoints[1].time, 2240.92 / 3.0, 1e-6);
+  EXPECT_NEAR(p.waypoints[2].position.x(), 2240.92, 1e-6);  // parallel to the way (north)
+  EXPECT_GT(p.waypoints[2].position.y(), pr.targets[0].state.position.y() + 4.5 * p.waypoints[2].time);
+  EXPECT_NEAR(predicted, 2240.92, 1.0) << p.message;
+  EXPECT_GE(flownSeparation(p, pr), 1852.0) << p.message;
+
+  pr.targets[0].state.position.x() = 300.0;
+  const Plan port = separationManoeuvre(pr, 0.0, "preferred", true);
+  ASSERT_EQ(port.waypoints.size(), 3u) << port.message;
+  EXPECT_LT(std::remainder(port.course_setpoint, kTwoPi), 0.0) << port.message;
+  EXPECT_GE(flownSeparation(port, pr), 1852.0) << port.message;
+}

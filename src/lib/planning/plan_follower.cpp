@@ -84,7 +84,23 @@ std::vector<PlannerTarget> selectPlannerTargets(const std::string& own_id, const
 bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {
   if (plan.status != PlanStatus::Ok || !std::isfinite(plan.course_setpoint))
     return false;
-  return std::remainder(plan.course_setpoint - problem.own.course, 2 * kPi) < -degToRad(5.0);
+  const double threshold = degToRad(5.0);
+  // The first leg off the present course by more than the threshold, among those that begin before the
+  // last target's CPA (later legs are the way on, not the manoeuvre): a plan may hold on for a while and
+  // then turn (ACO's lattice paths do).
+  double encounter_end = 0.0;
+  for (const auto& t : problem.targets)
+    encounter_end = std::max(encounter_end, computeCpa(problem.own, t.state).tcpa);
+  const auto& w = plan.waypoints;
+  for (size_t k = 1; k < w.size() && w[k - 1].time <= encounter_end; ++k) {
+    const Eigen::Vector2d leg = w[k].position - w[k - 1].position;
+    if (leg.norm() < 1.0)
+      continue;
+    const double alteration = std::remainder(courseOf(leg) - problem.own.course, 2 * kPi);
+    if (std::abs(alteration) > threshold)
+      return alteration < 0.0;
+  }
+  return std::remainder(plan.course_setpoint - problem.own.course, 2 * kPi) < -threshold;
 }
 
 namespace {
@@ -136,7 +152,8 @@ bool onlyKeepsOutOfTheWay(const PlanningProblem& pr) {
 struct RuleCheck {
   const PlanningProblem& problem;
   double land_required = 0.0;
-  bool give_way = false;
+  bool give_way = false;   // she gives way in a head-on or crossing encounter (Rules 14, 15)
+  bool port_side = false;  // a ship crossing from her port side, which she stood on for (Rule 17(c))
 
   std::string broken(const Plan& p) const {
     if (!clearOfLand(p, problem, land_required))
@@ -154,6 +171,8 @@ struct RuleCheck {
       return kClosesStandOn;
     if (give_way && firstAlterationToPort(p, problem))
       return "altered to port, Rules 14/15";
+    if (port_side && firstAlterationToPort(p, problem))
+      return "altered to port for a ship on the port side, Rule 17(c)";
     return "";
   }
 
@@ -235,8 +254,10 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
   RuleCheck check{problem};
   check.land_required =
       landRequirement(problem.own.position, problem.goal, problem.obstacles, problem.min_obstacle_clearance);
-  for (const auto& t : problem.targets)
+  for (const auto& t : problem.targets) {
     check.give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
+    check.port_side |= t.encounter == Encounter::CrossingStandOn;
+  }
   const bool separation_net = problem.min_separation > 0.0 && !problem.targets.empty();
   double preferred_time = 0.0;
   if (separation_net)
@@ -271,7 +292,13 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
     }
   }
   // The rules in order of weight: land and separation are safety, a port alteration is a rule finding.
+  // The net's manoeuvre tries starboard first: taken when it keeps every rule; else the port plan stays.
   if (why.rfind("altered to port", 0) == 0) {
+    Plan net = separationManoeuvre(original, check.land_required, "the plan " + why);
+    if (separation_net && check.broken(net).empty()) {
+      net.compute_time = first.compute_time;
+      return net;
+    }
     first.message += " (port alteration kept: no starboard plan in " + std::to_string(retries) + " retries)";
     return first;
   }

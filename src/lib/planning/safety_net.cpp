@@ -48,7 +48,7 @@ PredictedRoute planRoute(const Plan& plan, const PlanningProblem& pr) {
   const Eigen::Vector2d from = pr.own.position;
   const double reach = std::max(pr.own.speed, 0.5) * pr.prediction_horizon;
   const double after =
-      plan.speed_setpoint > 0.0 || plan.status == PlanStatus::Fallback ? plan.speed_setpoint : pr.own.speed;
+      plan.speed_setpoint > 0.0 || plan.status == PlanStatus::Fallback ? plan.speed_setpoint : keptSpeed(pr);
   if (plan.waypoints.size() < 2)
     return {{from, from + courseSpeedToVelocity(plan.course_setpoint, reach)}, {after}};
   PredictedRoute r{{from}, {}};
@@ -172,12 +172,12 @@ Plan manoeuvrePlan(const PlanningProblem& pr, double base, const Candidate& c, d
   Plan p;
   p.status = c.speed_factor > 0.0 ? PlanStatus::Ok : PlanStatus::Fallback;
   p.course_setpoint = wrapTwoPi(base + c.turn);
-  p.speed_setpoint = c.speed_factor > 0.0 ? pr.own.speed : 0.0;  // past the leg: cruising speed again
+  p.speed_setpoint = c.speed_factor > 0.0 ? keptSpeed(pr) : 0.0;  // past the leg: cruising speed again
   PlannedWaypoint start, leg;
   start.position = pr.own.position;
   leg.time = hold;
   leg.course = p.course_setpoint;
-  leg.speed = pr.own.speed * c.speed_factor;
+  leg.speed = keptSpeed(pr) * c.speed_factor;
   leg.position = pr.own.position + courseSpeedToVelocity(leg.course, leg.speed) * hold;
   p.waypoints = {start};
   if (c.speed_factor > 0.0)
@@ -196,7 +196,7 @@ bool overtakes(const PlanningProblem& pr) {
 // longer ones when she overtakes.
 std::vector<double> holdTimes(const PlanningProblem& pr, double base, const Candidate& c, bool until_clear) {
   const double past =
-      holdUntilPast(pr, courseSpeedToVelocity(base + c.turn, pr.own.speed * c.speed_factor), pr.targets);
+      holdUntilPast(pr, courseSpeedToVelocity(base + c.turn, keptSpeed(pr) * c.speed_factor), pr.targets);
   std::vector<double> out;
   // The preferred distance is not worth a swing longer than kLongestHold.
   auto add = [&](double h) {
@@ -218,6 +218,58 @@ std::vector<double> holdTimes(const PlanningProblem& pr, double base, const Cand
   return out;
 }
 
+// Rule 13(d), the way a seaman overtakes: turn `turn` off the way course until `offset` metres to that
+// side of the way, run parallel to it for `stretch` x the time until every target is past
+// (holdUntilPast, from there; at most until the next point of the way is `offset` ahead, so that she
+// does not sail past her goal), then steer for the goal. Overtaking, a turn held and then undone towards
+// the goal comes back across the overtaken ship's bow before she is clear; the parallel leg keeps the
+// offset for the whole pass, and the stretch lets her draw ahead before she comes back.
+Plan offsetPlan(const PlanningProblem& pr, double base, double turn, double offset, double stretch) {
+  const double v = keptSpeed(pr);
+  const double out_time = offset / (v * std::abs(std::sin(turn)));
+  const Eigen::Vector2d out_end = pr.own.position + courseSpeedToVelocity(base + turn, v) * out_time;
+  PlanningProblem there = pr;
+  there.own.position = out_end;
+  for (auto& t : there.targets)
+    t.state.position += t.state.velocity() * out_time;
+  // Never beyond the next point of the way (the goal or the land route's): abeam of it she turns in.
+  const Eigen::Vector2d next = pr.route.empty() ? pr.goal : pr.route.front();
+  const double ahead = (next - out_end).dot(courseSpeedToVelocity(base, 1.0)) - offset;
+  const double parallel =
+      std::min(stretch * holdUntilPast(there, courseSpeedToVelocity(base, v), there.targets),
+               std::max(0.0, ahead) / v);
+  Plan p;
+  p.status = PlanStatus::Ok;
+  p.course_setpoint = wrapTwoPi(base + turn);
+  p.speed_setpoint = v;
+  PlannedWaypoint start, out, along;
+  start.position = pr.own.position;
+  out = {out_end, out_time, p.course_setpoint, v};
+  along = {out_end + courseSpeedToVelocity(base, v) * parallel, out_time + parallel, wrapTwoPi(base), v};
+  p.waypoints = {start, out, along};
+  return p;
+}
+
+// The offset manoeuvres in order of preference: the smaller offset first (1.1 or 1.5 x the margin on
+// the minimum separation, so that the parallel leg passes with room to spare), then the side away from
+// the overtaken ships (either is allowed, Rule 13), the smaller turn (at least 30 deg, Rule 8(b)) and
+// the shorter parallel leg.
+std::vector<Plan> offsetPlans(const PlanningProblem& pr, double base) {
+  double abeam = 0.0;  // the overtaken ships' side of the way: + starboard
+  for (const auto& t : pr.targets)
+    if (t.encounter == Encounter::Overtaking)
+      abeam += std::sin(courseOf(t.state.position - pr.own.position) - base);
+  const double away = abeam > 0.0 ? -1.0 : 1.0;
+  const double wanted = kSeparationMargin * pr.min_separation;
+  std::vector<Plan> out;
+  for (double k : {1.1, 1.5})
+    for (double side : {away, -away})
+      for (int deg : {30, 45, 60})
+        for (double stretch : {1.0, 1.5, 2.0})
+          out.push_back(offsetPlan(pr, base, side * degToRad(deg), k * wanted, stretch));
+  return out;
+}
+
 }  // namespace
 
 Plan holdCoursePlan(const PlanningProblem& pr, const std::vector<PlannerTarget>& until_past) {
@@ -231,7 +283,7 @@ double passingHorizon(const PlanningProblem& pr) {
     return pr.prediction_horizon;
   PlanningProblem longest = pr;
   longest.prediction_horizon = std::max(pr.prediction_horizon, kLongestPass);
-  const double past = holdUntilPast(longest, courseSpeedToVelocity(wayCourse(pr), pr.own.speed), pr.targets);
+  const double past = holdUntilPast(longest, courseSpeedToVelocity(wayCourse(pr), keptSpeed(pr)), pr.targets);
   return std::max(past, pr.prediction_horizon);
 }
 
@@ -277,6 +329,14 @@ Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const
         first_minimum.emplace(p, clearance);
       if (!farthest || clearance > farthest->second)
         farthest.emplace(p, clearance);
+    }
+  if (starboard_at_full_speed && overtakes(pr))
+    for (const Plan& p : offsetPlans(pr, base)) {
+      if (!clearOfLand(p))
+        continue;
+      const double clearance = planSeparation(p, pr);
+      if (clearance >= wanted)
+        return chosen(p, clearance);
     }
   if (first_minimum)
     return chosen(first_minimum->first, first_minimum->second);

@@ -64,8 +64,8 @@ struct PlanFollowerConfig {
 
 // The planner is first asked for the preferred passing distance (kPreferredSeparation x min_separation,
 // planning.h); that plan is kept when it is Ok and keeps the rules below. Otherwise the problem as given
-// goes on as follows. The rules every planner's plan must keep, whatever the algorithm; a plan that breaks one is refused
-// and the planner asked again with another seed, up to `retries` times:
+// goes on as follows. The rules every planner's plan must keep, whatever the algorithm; a plan that breaks
+// one is refused and the planner asked again with another seed, up to `retries` times:
 //  - land: a plan whose track (landTrack) comes closer to a static obstacle than landRequirement()
 //    allows. If none keeps clear, the result is NoSolution (the follower's fallback, which stops
 //    rather than run aground);
@@ -73,12 +73,16 @@ struct PlanFollowerConfig {
 //    the problem's targets closer than min_separation. If none keeps it, or the planner finds no
 //    solution, the separation manoeuvre (separationManoeuvre) is flown instead;
 //  - Rules 14 and 15: when the own ship gives way in a head-on or crossing encounter (a target of the
-//    problem with that encounter), a first alteration more than 5 deg to port. If none complies, the
-//    first plan is kept with a note in its message.
+//    problem with that encounter), a first alteration more than 5 deg to port; Rule 17(c): the same
+//    when a ship crosses from her port side (she stood on, and now acts). If none complies, the
+//    separation manoeuvre (starboard first) when it keeps every rule; else the first plan is kept with a
+//    note in its message.
 // A planner's Fallback (a least-violation plan, which the follower sails all the same) keeps the land
 // and separation rules too. `make` is the planner (it may throw; the exception propagates).
 Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries = 3);
+// The plan's first alteration of more than 5 deg is to port: its first leg that departs that much from
+// the present course and begins before the last target's CPA, else its course set-point. Ok plans only.
 bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
 
 // Paper mode (plannerMode, planning.h) runs the method as published: the shared rules above, the

@@ -70,8 +70,11 @@ Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTar
 // goes into the message. starboard_at_full_speed: the turns to starboard at full speed only (how
 // planUnderSharedRules seeks the preferred passing distance, which is worth neither the ship's way nor a
 // turn to port); when she overtakes, also held up to twice as long as until past, so that the overtaken
-// ship is clear on her way back too (Rule 13(d)); no hold longer than kLongestHold. `predicted`, when
-// given, gets the returned plan's planSeparation, so that a caller need not fly it again.
+// ship is clear on her way back too (Rule 13(d)); no hold longer than kLongestHold; and when no turn
+// keeps the margin, an offset: 30-60 deg to either side (away from the overtaken ships first) until 1.1
+// or 1.5 x the margin off the way, then parallel to the way until they are past, then the goal.
+// Speeds are the kept speed (keptSpeed, planning.h). `predicted`, when given, gets the returned plan's
+// planSeparation, so that a caller need not fly it again.
 Plan separationManoeuvre(const PlanningProblem& problem, double land_clearance, const std::string& why,
                          bool starboard_at_full_speed = false, double* predicted = nullptr);
 
