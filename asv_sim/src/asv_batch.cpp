@@ -61,7 +61,13 @@ const char* kUsage =
     "                       --sample-period); with --runs > 1 the seed goes into the name: CSV_seed<S>.csv\n"
     "  --risk CSV           write the own ship's risk picture, one row per target every --sample-period:\n"
     "                       t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role (Hu et al. 2017\n"
-    "                       risk level 0/1/2 and Algorithm 1 flag); with --runs > 1 named as --trajectory\n"
+    "                       risk level 0/1/2 and Algorithm 1 flag) as her planner assesses it (planner "
+    "none:\n"
+    "                       the default assessment); with --runs > 1 named as --trajectory\n"
+    "  --plans CSV          write every plan the own ship's planner made: t_s,reason,status,course_deg,\n"
+    "                       speed_mps,message (why it replanned, and the plan's own account: the shared\n"
+    "                       rules' retries, the separation manoeuvre); with --runs > 1 named as "
+    "--trajectory\n"
     "  --geojson FILE       write the run as GeoJSON for a GIS (tracks, closest approaches, manoeuvres,\n"
     "                       land; longitude/latitude); with --runs > 1 named as --trajectory\n"
     "  --dt DT              integration step [s] (default 0.1)\n"
@@ -75,7 +81,7 @@ const char* kUsage =
     "exit status: 0 done (whatever the runs' outcomes), 2 bad arguments, scenario or planner, 1 failure.\n";
 
 struct Options {
-  std::string scenario, planner, json, trajectory, geojson, agents, risk;
+  std::string scenario, planner, json, trajectory, geojson, agents, risk, plans;
   bool planner_given = false;
   asv::ChartOptions charts;
   std::vector<std::pair<std::string, std::string>> params;  // "planner/key", value
@@ -154,6 +160,8 @@ Options parseArgs(int argc, char** argv) {
       o.trajectory = value();
     } else if (a == "--risk") {
       o.risk = value();
+    } else if (a == "--plans") {
+      o.plans = value();
     } else if (a == "--geojson") {
       o.geojson = value();
     } else if (a == "--dt") {
@@ -288,6 +296,8 @@ private:
   void openTrajectory();
   void writeTrajectory();
   void writeRisk(double now, const std::vector<asv::PlannerTarget>& targets);
+  void watchRisk(double now);
+  void writePlan(double now, const std::string& why, const asv::Plan& plan);
   void sample();
   void planPluginShip(PluginShip& ps, double now);
   void dssaPhase(double now);
@@ -307,8 +317,11 @@ private:
   std::vector<Eigen::Vector2d> agent_goals_;
   std::unique_ptr<asv::DssaExchange> exchange_;
   double dssa_period_ = 10.0;
-  std::ofstream traj_, risk_;
+  std::ofstream traj_, risk_, plans_;
   double next_risk_ = 0.0;
+  // The own ship's picture for --risk when no plugin of hers assesses it (planner none, or negotiating
+  // DSSA): the same assessment with the default settings.
+  asv::RiskAssessor watch_;
 };
 
 asv::SimConfig simConfig(const Options& o) {
@@ -399,6 +412,7 @@ void BatchRun::openTrajectory() {
   };
   open(traj_, o_.trajectory, "trajectory", "t_s,ship,x_m,y_m,course_deg,speed_mps,lat_deg,lon_deg\n");
   open(risk_, o_.risk, "risk", "t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role\n");
+  open(plans_, o_.plans, "plans", "t_s,reason,status,course_deg,speed_mps,message\n");
 }
 
 // The own ship's picture as its planner saw it (the plugin ship's RiskAssessor), every sample period.
@@ -414,6 +428,30 @@ void BatchRun::writeRisk(double now, const std::vector<asv::PlannerTarget>& targ
                   t.compliant ? 1 : 0, asv::toString(t.role));
     risk_ << buf;
   }
+}
+
+void BatchRun::watchRisk(double now) {
+  const bool own_plans = !plugin_ships_.empty() && plugin_ships_.front()->index == 0;
+  if (risk_.is_open() && !own_plans)
+    writeRisk(now, plannerTargets(sim_, 0, watch_));
+}
+
+// A CSV field: quoted, its quotes doubled (RFC 4180).
+std::string csvQuoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text)
+    out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+void BatchRun::writePlan(double now, const std::string& why, const asv::Plan& plan) {
+  if (!plans_.is_open())
+    return;
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.1f,", now);
+  plans_ << buf << csvQuoted(why) << ',' << asv::toString(plan.status);
+  std::snprintf(buf, sizeof buf, ",%.1f,%.2f,", asv::radToDeg(plan.course_setpoint), plan.speed_setpoint);
+  plans_ << buf << csvQuoted(plan.message) << '\n';
 }
 
 void BatchRun::writeTrajectory() {
@@ -465,8 +503,10 @@ void BatchRun::planPluginShip(PluginShip& ps, double now) {
       plan = ps.follower.fallback(targets, std::string("plugin error: ") + e.what());
     }
     plan.compute_time = wallSeconds(t0);
-    if (ps.index == 0)
+    if (ps.index == 0) {
       rec_.addPlanTime(plan.compute_time);
+      writePlan(now, why, plan);
+    }
     ps.follower.acceptPlan(plan, now, targets, why);
   }
   double course = 0.0, speed = 0.0;
@@ -528,6 +568,7 @@ asv::RunResult BatchRun::run(Progress& progress, int run_index) {
     }
     if (now >= next_tick - 1e-9) {
       next_tick += setpoint_period;
+      watchRisk(now);
       for (auto& ps : plugin_ships_)
         planPluginShip(*ps, now);
     }

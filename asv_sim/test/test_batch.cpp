@@ -227,3 +227,53 @@ TEST(AsvBatch, RiskPictureShowsTheFlagOfFigure6) {
   EXPECT_EQ(run("--scenario " + sc + " --follower replan_onrisk=false").status, 2);
   EXPECT_EQ(run("--scenario " + sc + " --follower replan_on_risk").status, 2);
 }
+
+// Without a planner of her own the own ship's picture is still written (the default assessment), not
+// left empty. By hand: ts1 4242.6 m off (3000, 3000), closing at 7.07 m/s, CPA 0 m at 600 s; she
+// crosses from starboard, so the own ship gives way (Rule 15).
+TEST(AsvBatch, RiskPictureIsWrittenWithoutAPlanner) {
+  const std::string csv = ::testing::TempDir() + "asv_batch_risk_none.csv";
+  const Output o = run("--scenario " + kScenario + " --planner none --deterministic --quiet --risk " + csv);
+  ASSERT_EQ(o.status, 0) << o.out;
+  std::ifstream f(csv);
+  std::string header, first;
+  ASSERT_TRUE(std::getline(f, header));
+  ASSERT_TRUE(std::getline(f, first)) << "no rows: the picture is empty without a planner";
+  std::stringstream ss(first);
+  std::vector<std::string> c;
+  for (std::string cell; std::getline(ss, cell, ',');)
+    c.push_back(cell);
+  ASSERT_EQ(c.size(), 9u) << first;
+  EXPECT_EQ(c[0], "0.0");
+  EXPECT_EQ(c[1], "ts1");
+  EXPECT_NEAR(std::stod(c[2]), 4242.6, 0.1);
+  EXPECT_NEAR(std::stod(c[3]), 600.0, 0.1);
+  EXPECT_NEAR(std::stod(c[4]), 0.0, 0.1);
+  EXPECT_EQ(c[8], "give_way");
+}
+
+// --plans writes one row per plan the own ship's planner made: as many as the result counts in
+// plan_time_ms.count, the first at t = 0 (the run's first replan), each a status and a quoted message.
+TEST(AsvBatch, PlanLogHasARowForEveryPlan) {
+  const std::string csv = ::testing::TempDir() + "asv_batch_plans.csv";
+  const Output o = run("--scenario " + kScenario + " --deterministic --quiet --plans " + csv);
+  ASSERT_EQ(o.status, 0) << o.out;
+  const std::regex count_re("\"plan_time_ms\": \\{[^}]*\"count\": ([0-9]+)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(o.out, m, count_re)) << o.out;
+  std::ifstream f(csv);
+  std::string line;
+  ASSERT_TRUE(std::getline(f, line));
+  EXPECT_EQ(line, "t_s,reason,status,course_deg,speed_mps,message");
+  const std::regex row_re("^([0-9.]+),\"[^\"]*\",(ok|fallback|no_solution),-?[0-9.]+,[0-9.]+,\"(.*)\"$");
+  int rows = 0;
+  while (std::getline(f, line)) {
+    std::smatch r;
+    ASSERT_TRUE(std::regex_match(line, r, row_re)) << line;
+    if (rows++ == 0)
+      EXPECT_EQ(r[1].str(), "0.0");
+    EXPECT_FALSE(r[3].str().empty()) << line;
+  }
+  EXPECT_GT(rows, 0);
+  EXPECT_EQ(rows, std::stoi(m[1].str()));
+}
