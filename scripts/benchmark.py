@@ -32,6 +32,9 @@ CLASSES = ["head_on", "crossing_give_way", "crossing_stand_on", "overtaking", "o
 PASS_SEPARATION = 0.99
 PASS_SCORE_SINGLE = 0.95
 PASS_SCORE_MULTI = 0.85
+# ... and no turn to port for a ship met head-on or crossing from starboard unless the evaluator's note
+# shows it was forced (another ship or land where a turn to starboard would have gone).
+UNFORCED_PORT_TURNS = ("rule 14 port turn", "rule 15 port turn")
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -163,7 +166,8 @@ def finding(note):
                          (r"^rule 15: turned", "rule 15 port turn"), (r"^rule 15: crossed", "rule 15 crossed ahead"),
                          (r"^rule 17\(c\)", "rule 17(c) port turn"), (r"^rule 17:", "rule 17 stand-on altered")]:
         if re.match(pattern, note):
-            return key
+            # The evaluator says whether a Rule 14/15 port turn was forced (no turn to starboard open).
+            return key + " (forced)" if "; forced: " in note else key
     return None
 
 
@@ -217,7 +221,13 @@ def passes(m):
     return {"no collision": m["collisions"] == 0 and m["groundings"] == 0,
             "separation >= 99 %": None if sep is None else sep >= PASS_SEPARATION,
             "score single >= 0.95": None if s1 is None else s1 >= PASS_SCORE_SINGLE,
-            "score multi >= 0.85": None if sm is None else sm >= PASS_SCORE_MULTI}
+            "score multi >= 0.85": None if sm is None else sm >= PASS_SCORE_MULTI,
+            "no unforced port turn": unforced_port_turns(m) == 0}
+
+
+def unforced_port_turns(m):
+    """Turns to port under Rules 14/15 that the evaluator did not find forced."""
+    return sum(m["findings"].get(k, 0) for k in UNFORCED_PORT_TURNS)
 
 
 def summarise(results, planners):
@@ -301,7 +311,8 @@ def report(out, results, summary, wall):
              "**tuning** (seed %d) may be looked at while the planners are improved. Each situation runs once per "
              "planner through `asv_batch` (ground truth, no sensors). Pass rules: no own-ship collision or grounding, "
              "the scenario's minimum separation kept in >= 99 %% of runs, mean COLREGs score >= 0.95 with one target "
-             "and >= 0.85 with several. Plan time: median of the runs' medians, 99th percentile and maximum of the "
+             "and >= 0.85 with several, no unforced turn to port under Rules 14/15 (the evaluator's note says when a turn to starboard "
+             "was closed by another ship or land). Plan time: median of the runs' medians, 99th percentile and maximum of the "
              "runs' maxima (wall clock, %d cores shared by %s job slots)." % (
                  dict(RANGES)["test"], dict(RANGES)["tuning"], os.cpu_count(), wall.get("jobs", "?")), ""]
     for name, _ in RANGES:

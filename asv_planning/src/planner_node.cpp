@@ -46,16 +46,12 @@ asv::PlannerNodeConfig plannerConfig(const asv::ParamMap& params) {
 // against a plugin that never returns, and plugins that stop at their budget give the same plan on
 // any machine. Paper mode switches the follower's sea extensions off, and the replanning on rising risk of
 // a method that plans once (applyPlannerMode).
-asv::PlannerMode modeOf(const std::string& mode) {
-  return mode == "paper" ? asv::PlannerMode::Paper : asv::PlannerMode::Sea;
-}
-
 asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool lockstep,
                                        const std::string& mode, const PlannerPlugin& plugin) {
   asv::PlanFollowerConfig fc = p.follower;
   if (lockstep)
     fc.time_budget = p.lockstep_time_budget;
-  asv::applyPlannerMode(fc, modeOf(mode), plugin.plansOnce());
+  asv::applyPlannerMode(fc, asv::parsePlannerMode(mode, p.planner), plugin.plansOnce());
   return fc;
 }
 
@@ -362,7 +358,7 @@ void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerT
   asv::Plan plan;
   try {
     plan = asv::planInMode([this](const asv::PlanningProblem& p) { return plugin_->makePlan(p); }, pr,
-                           modeOf(mode_));
+                           asv::parsePlannerMode(mode_, params_.planner));
   } catch (const std::exception& e) {
     ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), e.what());
     plan = follower_->fallback(targets, std::string("plugin error: ") + e.what());

@@ -26,6 +26,7 @@ struct Script {
     double course_deg, speed;
   };
   std::vector<Other> others;
+  std::vector<StaticObstacle> land;
 };
 
 double courseAt(const std::map<double, double>& sched, double t) {
@@ -48,6 +49,7 @@ RunRecorder record(const Script& s, const EvaluationConfig& cfg = {},
     tgts.push_back(o);
   }
   info.origin = {54.0, 3.0};  // the open North Sea
+  info.obstacles = s.land;
   RunRecorder rec(cfg, info);
   Eigen::Vector2d po = s.own0;
   std::vector<Eigen::Vector2d> pt;
@@ -145,6 +147,39 @@ TEST(Evaluation, PortTurnInHeadOnGetsTheRule14Penalty) {
   EXPECT_FALSE(hasNote(t, "rule 16"));
   EXPECT_NEAR(t.score, 0.5, 1e-12);
   EXPECT_NEAR(r.own.colregs_score, 0.5, 1e-12);
+}
+
+// The Rule 14 note says whether a turn to starboard was open. The head-on script above: at the first
+// action (t = 100 s, own at (0, 500) on 320 deg) the target's CPA is 900 s off (relative position
+// (0, 9000), relative velocity (3.214, -8.830): 79470 / 88.30). 30 deg to starboard held 900 s runs from
+// (0, 500) to (2250, 4397). A ship lying still at (1500, 3098.1), 3000 m along that line, would have
+// been passed at 0 m; an islet over x 1000-3000 m, y 2000-4000 m is crossed (at (1000, 2232)). Without
+// either the turn was open. The finding and its penalty stand either way.
+TEST(Evaluation, Rule14NoteSaysWhetherAPortTurnWasForced) {
+  Script s;
+  s.tgt0 = {0.0, 10000.0};
+  s.tgt_course_deg = 180.0;
+  s.own_course_deg = {{0.0, 0.0}, {100.0, -40.0}};
+  auto rule14 = [](const Script& sc) {
+    const RunResult r = record(sc).finish();
+    const TargetResult& t = r.own.targets.at(0);
+    EXPECT_NEAR(t.score, 0.5, 1e-12);
+    for (const auto& n : t.notes)
+      if (n.rfind("rule 14: turned", 0) == 0)
+        return n;
+    return std::string("no rule 14 note");
+  };
+  EXPECT_NE(rule14(s).find("; not forced: a turn to starboard was open"), std::string::npos) << rule14(s);
+  Script ship = s;
+  ship.others = {{{1500.0, 3098.08}, 0.0, 0.0}};
+  EXPECT_NE(rule14(ship).find("; forced: 30 deg to starboard would have passed ts2 at 0 m"),
+            std::string::npos)
+      << rule14(ship);
+  Script islet = s;
+  islet.land = {{"islet", {{1000.0, 2000.0}, {3000.0, 2000.0}, {3000.0, 4000.0}, {1000.0, 4000.0}}, nullptr}};
+  EXPECT_NE(rule14(islet).find("; forced: 30 deg to starboard would have come within 0 m of islet"),
+            std::string::npos)
+      << rule14(islet);
 }
 
 TEST(Evaluation, StandOnShipThatTurnsEarlyGetsTheRule17Penalty) {

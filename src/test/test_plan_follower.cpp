@@ -281,11 +281,14 @@ TEST(PlanUnderSharedRules, NoTurnToPortForAShipOnThePortSide) {
   EXPECT_GE(asv::planSeparation(p, pr), 1.1 * 926.0) << p.message;
 }
 
-// The first alteration is the first leg that turns, not the set-point of a leg that holds on. A ship met
-// head-on 6000 m ahead, both at 6 m/s: her CPA is at 500 s. By hand, each plan from the origin (north):
-// ahead 1200 m (200 s), then 330 deg: to port; 030 first and 330 after: to starboard; ahead 3600 m
-// (600 s, past the CPA) and then 330: the later leg is the way on, no alteration.
-TEST(PlanUnderSharedRules, TheFirstAlterationIsTheFirstLegThatTurns) {
+// A plan alters to port by its legs before the last CPA, not only by its set-point. A ship met head-on
+// 6000 m ahead, both at 6 m/s: her CPA is at 500 s. By hand, each plan from the origin (north) for
+// 200 s and then 330 deg for 300 s: ahead first (000), 30 deg to port; 030 first, back across the
+// course to 330: 30 each way, port within 10 of starboard, to port; 060 first and 330 after: 60 to
+// starboard, 30 to port, not; 003 first, 330 second, to port; 030 and 357: 3 deg to port, under the
+// 5 deg threshold, not; ahead 3600 m (600 s, past the CPA) and then 330: the later leg is the way on,
+// no alteration.
+TEST(PlanUnderSharedRules, APlanAltersToPortByItsLegsBeforeTheLastCpa) {
   asv::PlanningProblem pr;
   pr.own = own();
   asv::PlannerTarget t;
@@ -308,9 +311,12 @@ TEST(PlanUnderSharedRules, TheFirstAlterationIsTheFirstLegThatTurns) {
     }
     return p;
   };
-  EXPECT_TRUE(asv::firstAlterationToPort(plan({{0.0, 200.0}, {330.0, 300.0}}), pr));
-  EXPECT_FALSE(asv::firstAlterationToPort(plan({{30.0, 200.0}, {330.0, 300.0}}), pr));
-  EXPECT_FALSE(asv::firstAlterationToPort(plan({{0.0, 600.0}, {330.0, 300.0}}), pr));
+  EXPECT_TRUE(asv::altersToPort(plan({{0.0, 200.0}, {330.0, 300.0}}), pr));
+  EXPECT_TRUE(asv::altersToPort(plan({{30.0, 200.0}, {330.0, 300.0}}), pr));
+  EXPECT_FALSE(asv::altersToPort(plan({{60.0, 200.0}, {330.0, 300.0}}), pr));
+  EXPECT_TRUE(asv::altersToPort(plan({{3.0, 200.0}, {330.0, 300.0}}), pr));
+  EXPECT_FALSE(asv::altersToPort(plan({{30.0, 200.0}, {357.0, 300.0}}), pr));
+  EXPECT_FALSE(asv::altersToPort(plan({{0.0, 600.0}, {330.0, 300.0}}), pr));
 }
 
 TEST(PlanUnderSharedRules, RetriesAPortPlanWhenGivingWay) {
@@ -328,7 +334,7 @@ TEST(PlanUnderSharedRules, RetriesAPortPlanWhenGivingWay) {
   // No head-on or crossing give-way target: the plan stands, whatever its side.
   asv::Plan p = asv::planUnderSharedRules(fake, pr);
   EXPECT_EQ(calls, 1);
-  EXPECT_TRUE(asv::firstAlterationToPort(p, pr));
+  EXPECT_TRUE(asv::altersToPort(p, pr));
   // Head-on: the port plan is refused and the retry's starboard plan taken.
   asv::PlannerTarget t;
   t.state.id = "ts1";
@@ -783,4 +789,58 @@ TEST(PlanUnderSharedRules, AnOvertakingIsJudgedOverTheWholePass) {
   // Met head-on instead, the same plan is judged over the horizon and kept as it is.
   pr.targets[0].encounter = asv::Encounter::HeadOn;
   EXPECT_EQ(asv::planUnderSharedRules(swing, pr).message, "swing (for the preferred distance, 1852 m)");
+}
+
+// Rule 17(a)(i) gives way to a duty to keep out of the way. Own ship north at 6 m/s; a ship she stands
+// on for lies still at (2340.0, 2113.1): 3000 m along the 030 line and 970 m to starboard of it, 2340 m
+// off her present track. A plan that turns to 030 passes her at 970 m: closer than holding course and
+// inside the 1018.6 m margin, so refused alone (the ship stands on). With a ship crossing from
+// starboard to keep out of the way of (westbound at 1 m/s from (8000, 8000), over 3 km off the plan
+// throughout), the duty comes first and only the 926 m minimum is asked of the stand-on pass: taken.
+TEST(PlanUnderSharedRules, TheStandOnRuleYieldsToADutyToKeepOutOfTheWay) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {5000.0, 8660.3};
+  pr.min_separation = 926.0;
+  asv::PlannerTarget still;
+  still.state.id = "still";
+  still.state.position = {2340.0, 2113.1};
+  still.state.speed = 0.0;
+  still.encounter = asv::Encounter::CrossingStandOn;
+  still.role = asv::OwnRole::StandOn;
+  pr.stand_on_for = {still};
+  auto turn = [](const asv::PlanningProblem& p) {
+    asv::Plan plan;
+    plan.status = asv::PlanStatus::Ok;
+    plan.course_setpoint = asv::degToRad(30.0);
+    plan.speed_setpoint = 6.0;
+    asv::PlannedWaypoint a, b;
+    a.position = p.own.position;
+    b.position = asv::courseSpeedToVelocity(asv::degToRad(30.0), 6.0) * 1200.0;
+    b.time = 1200.0;
+    b.speed = 6.0;
+    plan.waypoints = {a, b};
+    return plan;
+  };
+  EXPECT_NEAR(asv::planSeparation(turn(pr),
+                                  [&] {
+                                    asv::PlanningProblem w = pr;
+                                    w.targets = pr.stand_on_for;
+                                    return w;
+                                  }()),
+              970.0, 1.0);
+  const asv::Plan alone = asv::planUnderSharedRules(turn, pr);
+  EXPECT_NEAR(alone.course_setpoint, 0.0, 1e-9) << alone.message;
+  EXPECT_NE(alone.message.find("stand on (Rule 17(a)(i))"), std::string::npos) << alone.message;
+
+  asv::PlannerTarget crossing;
+  crossing.state.id = "ts1";
+  crossing.state.position = {8000.0, 8000.0};
+  crossing.state.course = crossing.state.heading = asv::degToRad(270.0);
+  crossing.state.speed = 1.0;
+  crossing.encounter = asv::Encounter::CrossingGiveWay;
+  crossing.role = asv::OwnRole::GiveWay;
+  pr.targets = {crossing};
+  const asv::Plan duty = asv::planUnderSharedRules(turn, pr);
+  EXPECT_NEAR(duty.course_setpoint, asv::degToRad(30.0), 1e-9) << duty.message;
 }

@@ -124,3 +124,42 @@ TEST(RiskAssessor, CombinesCpaCriEncounterAndFlag) {
   EXPECT_NEAR(r.cpa.dcpa, 0.0, 1e-9);
   EXPECT_GT(r.cri.cri, 0.6);
 }
+
+// The encounter stands as it was when the risk arose. Own ship at the origin, north at 6 m/s. First a
+// ship crossing from starboard, westbound from (6000, 6000) at 6 m/s: CPA 0 m in 1000 s, risk 1, the own
+// ship gives way (Rule 15). Then the same ship 1000 m dead ahead, northbound at 3 m/s: alone that reads
+// as overtaking (she is in the target's stern sector; CPA 0 m in 333 s), but the crossing stands. Once
+// she is past (100 m astern, northbound at 3 m/s: opening, TCPA < 0) the situation is over, and the same
+// overtaking geometry then reads as overtaking.
+TEST(RiskAssessor, TheEncounterStandsAsItWasWhenTheRiskArose) {
+  RiskAssessor assessor;
+  ShipState own;
+  own.id = "own";
+  own.course = own.heading = 0.0;
+  own.speed = 6.0;
+  auto ship = [](Eigen::Vector2d p, double course_deg, double speed) {
+    ShipState t;
+    t.id = "ts1";
+    t.position = p;
+    t.course = t.heading = degToRad(course_deg);
+    t.speed = speed;
+    return t;
+  };
+  TargetRisk r = assessor.assess(own, ship({6000.0, 6000.0}, 270.0, 6.0));
+  EXPECT_EQ(r.geometry.encounter, Encounter::CrossingGiveWay);
+  EXPECT_EQ(r.compliance.risk, RiskLevel::Collision);
+  EXPECT_EQ(classifyEncounter(own, ship({0.0, 1000.0}, 0.0, 3.0),
+                              computeCpa(own, ship({0.0, 1000.0}, 0.0, 3.0)), ColregsConfig{})
+                .encounter,
+            Encounter::Overtaking);
+  r = assessor.assess(own, ship({0.0, 1000.0}, 0.0, 3.0));
+  EXPECT_NEAR(r.cpa.tcpa, 1000.0 / 3.0, 1e-9);
+  EXPECT_EQ(r.geometry.encounter, Encounter::CrossingGiveWay);
+  EXPECT_EQ(r.geometry.role, OwnRole::GiveWay);
+  EXPECT_EQ(r.rule, 15);
+  r = assessor.assess(own, ship({0.0, -100.0}, 0.0, 3.0));
+  EXPECT_EQ(r.geometry.encounter, Encounter::None);
+  r = assessor.assess(own, ship({0.0, 1000.0}, 0.0, 3.0));
+  EXPECT_EQ(r.geometry.encounter, Encounter::Overtaking);
+  EXPECT_EQ(r.rule, 13);
+}

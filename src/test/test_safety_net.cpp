@@ -192,7 +192,7 @@ TEST(SafetyNet, ThePreferredDistanceIsSoughtOnlyToStarboardAtFullSpeed) {
     ASSERT_EQ(any.waypoints.size(), 2u);
     const double any_turn = std::remainder(any.course_setpoint - pr.own.course, kTwoPi);
     EXPECT_TRUE(any.waypoints[1].speed < 6.0 || any_turn < 0.0) << any.message;
-    const Plan starboard = separationManoeuvre(pr, 0.0, "starboard", true);
+    const Plan starboard = separationManoeuvre(pr, 0.0, "starboard", NetOptions::preferredDistance());
     ASSERT_EQ(starboard.waypoints.size(), 2u);
     EXPECT_DOUBLE_EQ(starboard.waypoints[1].speed, 6.0) << starboard.message;
     EXPECT_GE(std::remainder(starboard.course_setpoint - pr.own.course, kTwoPi), degToRad(30.0) - 1e-9);
@@ -210,6 +210,15 @@ PlanningProblem slowOvertaking(double ahead, double speed) {
   t.encounter = Encounter::Overtaking;
   t.role = OwnRole::GiveWay;
   pr.targets = {t};
+  return pr;
+}
+
+// The same, sought for the preferred distance as planUnderSharedRules seeks it: 1852 m, judged over the
+// whole pass.
+PlanningProblem preferredOvertaking(double ahead, double speed) {
+  PlanningProblem pr = slowOvertaking(ahead, speed);
+  pr.min_separation = 1852.0;
+  pr.prediction_horizon = passingHorizon(pr);
   return pr;
 }
 
@@ -234,11 +243,9 @@ TEST(SafetyNet, PassingHorizonLastsUntilAnOvertakenShipIsPast) {
 // same turn held only until past on it (hold by hand: TCPA + the time to open to 1.1 x 1852 m + 60 s)
 // comes back closer than 1852 m.
 TEST(SafetyNet, ThePreferredTurnIsHeldUntilAnOvertakenShipIsClear) {
-  PlanningProblem pr = slowOvertaking(3000.0, 3.0);
-  pr.min_separation = 1852.0;
-  pr.prediction_horizon = passingHorizon(pr);
+  PlanningProblem pr = preferredOvertaking(3000.0, 3.0);
   double predicted = 0.0;
-  const Plan p = separationManoeuvre(pr, 0.0, "preferred", true, &predicted);
+  const Plan p = separationManoeuvre(pr, 0.0, "preferred", NetOptions::preferredDistance(), &predicted);
   ASSERT_EQ(p.waypoints.size(), 2u) << p.message;
   EXPECT_GE(flownSeparation(p, pr), 1852.0) << p.message;
   EXPECT_NEAR(predicted, flownSeparation(p, pr), 1.0) << p.message;  // what the net reports is what it flies
@@ -265,11 +272,9 @@ TEST(SafetyNet, ThePreferredTurnIsHeldUntilAnOvertakenShipIsClear) {
 // (2240.9 / (6 sin 30 deg) = 747.0 s), then north; the overtaken ship stays on x = 0, so the pass is
 // the offset, 2240.9 m. With the ship 300 m to starboard of the way, the offset is to port, away from her.
 TEST(SafetyNet, ASlowOvertakingIsPassedOnAnOffsetParallelToTheWay) {
-  PlanningProblem pr = slowOvertaking(3000.0, 4.5);
-  pr.min_separation = 1852.0;
-  pr.prediction_horizon = passingHorizon(pr);
+  PlanningProblem pr = preferredOvertaking(3000.0, 4.5);
   double predicted = 0.0;
-  const Plan p = separationManoeuvre(pr, 0.0, "preferred", true, &predicted);
+  const Plan p = separationManoeuvre(pr, 0.0, "preferred", NetOptions::preferredDistance(), &predicted);
   ASSERT_EQ(p.waypoints.size(), 3u) << p.message;
   EXPECT_NEAR(radToDeg(std::remainder(p.course_setpoint, kTwoPi)), 30.0, 1e-9) << p.message;
   EXPECT_NEAR(p.waypoints[1].position.x(), 2240.92, 1e-6);
@@ -280,7 +285,7 @@ TEST(SafetyNet, ASlowOvertakingIsPassedOnAnOffsetParallelToTheWay) {
   EXPECT_GE(flownSeparation(p, pr), 1852.0) << p.message;
 
   pr.targets[0].state.position.x() = 300.0;
-  const Plan port = separationManoeuvre(pr, 0.0, "preferred", true);
+  const Plan port = separationManoeuvre(pr, 0.0, "preferred", NetOptions::preferredDistance());
   ASSERT_EQ(port.waypoints.size(), 3u) << port.message;
   EXPECT_LT(std::remainder(port.course_setpoint, kTwoPi), 0.0) << port.message;
   EXPECT_GE(flownSeparation(port, pr), 1852.0) << port.message;

@@ -678,6 +678,53 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
   }
 }
 
+// Rules 14 and 15 ask the give-way ship to turn to starboard, and Rule 17(c) the stand-on ship not to
+// turn to port for a ship on her port side. A turn to starboard was closed to her (our reading; it adds
+// to the note, the finding and its penalty stand) when, at her first action, a
+// turn of apparent_course_deg to starboard at her speed, held until this target's CPA (at least a
+// minute), would have passed another ship (holding its course and speed) closer than the minimum
+// separation, or come within the near-miss range of land (0.1 nm by default, the planners' default
+// clearance from land).
+std::string RunRecorder::starboardClosed(const Passage& p, size_t i, size_t j) const {
+  const Point& own = *p.both[p.ka].first;
+  const ShipState& entry = p.both[p.ke].first->s;
+  const double turn = cfg_.apparent_course_deg;
+  const Eigen::Vector2d v = courseSpeedToVelocity(entry.course + degToRad(turn), entry.speed);
+  const double hold = std::max(60.0, p.cpas[p.ka].tcpa);
+  for (size_t k = 0; k < tracks_.size(); ++k) {
+    if (k == i || k == j)
+      continue;
+    const auto& pts = tracks_[k].points;
+    const auto at = std::lower_bound(pts.begin(), pts.end(), own.t - 1e-6,
+                                     [](const Point& q, double t) { return q.t < t; });
+    if (at == pts.end() || std::fabs(at->t - own.t) > 1e-6 || !at->active)
+      continue;
+    const Cpa c = computeCpa(own.s.position, v, at->s.position, at->s.velocity());
+    const double t = std::clamp(c.tcpa, 0.0, hold);
+    const double d = ((own.s.position + v * t) - (at->s.position + at->s.velocity() * t)).norm();
+    if (d < r_min_)
+      return fmt("%.0f deg to starboard would have passed ", turn) + info_.ships[k].name +
+             fmt(" at %.0f m", d);
+  }
+  const Eigen::Vector2d end = own.s.position + v * hold;
+  for (const StaticObstacle& o : info_.obstacles) {
+    const double d = obstacleDistance(o, own.s.position, end);
+    if (d < r_nm_)
+      return fmt("%.0f deg to starboard would have come within %.0f m of ", turn, d) + o.name;
+  }
+  return "";
+}
+
+// A port-turn note (Rules 14, 15, 17(c)) says whether a turn to starboard was open (starboardClosed).
+void RunRecorder::notePortTurnForced(const Passage& p, size_t i, size_t j, TargetResult& r) const {
+  for (std::string& n : r.notes)
+    if (n.rfind("rule 14: turned", 0) == 0 || n.rfind("rule 15: turned", 0) == 0 ||
+        n.rfind("rule 17(c): turned", 0) == 0) {
+      const std::string why = p.ka < p.both.size() ? starboardClosed(p, i, j) : "";
+      n += why.empty() ? "; not forced: a turn to starboard was open" : "; forced: " + why;
+    }
+}
+
 // The stand-on ship: Rule 17 (no action before the give-way ship's action is clearly lacking; not to
 // port for a ship on the port side). An early action taken while the own ship had to keep out of the
 // way of another ship (`duties`) is not held against her: she cannot keep her course and speed for one
@@ -800,6 +847,7 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const PairHistory& h,
     judgeGiveWay(p, r, factor);
   else if (p.g.role == OwnRole::StandOn)
     judgeStandOn(p, r, factor, duties);
+  notePortTurnForced(p, i, j, r);
   finishScore(r, factor);
   return r;
 }

@@ -157,7 +157,7 @@ RolloutResult rolloutKinematic(const PlanningProblem& problem, PlannerAlgorithm&
       break;
     p.time = problem.time + t;
     const Plan plan = planner.plan(p);
-    const double to_goal = trueBearing(p.own.position, p.route.empty() ? p.goal : p.route.front());
+    const double to_goal = trueBearing(p.own.position, nextWayPoint(p));
     const double alteration = wrapPi(plan.course_setpoint - to_goal);
     out.alterations.push_back(alteration);
     out.final_course_error = alteration;

@@ -81,26 +81,35 @@ std::vector<PlannerTarget> selectPlannerTargets(const std::string& own_id, const
   return out;
 }
 
-bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem) {
+bool altersToPort(const Plan& plan, const PlanningProblem& problem) {
   if (plan.status != PlanStatus::Ok || !std::isfinite(plan.course_setpoint))
     return false;
   const double threshold = degToRad(5.0);
-  // The first leg off the present course by more than the threshold, among those that begin before the
-  // last target's CPA (later legs are the way on, not the manoeuvre): a plan may hold on for a while and
-  // then turn (ACO's lattice paths do).
+  // The evaluator judges a passage by its larger departure, and the follower's flown track overshoots a
+  // planned leg by several degrees: a port departure within this of the starboard one is the larger.
+  // Our choice: 10 deg.
+  const double overshoot = degToRad(10.0);
+  // The legs that begin before the last target's CPA are the manoeuvre (later ones are the way on). A
+  // plan may hold on and then turn, or swing to starboard and then back across its course to port
+  // (ACO's lattice paths do).
   double encounter_end = 0.0;
   for (const auto& t : problem.targets)
     encounter_end = std::max(encounter_end, computeCpa(problem.own, t.state).tcpa);
+  double starboard = 0.0, port = 0.0;
+  bool legs = false;
   const auto& w = plan.waypoints;
   for (size_t k = 1; k < w.size() && w[k - 1].time <= encounter_end; ++k) {
     const Eigen::Vector2d leg = w[k].position - w[k - 1].position;
     if (leg.norm() < 1.0)
       continue;
-    const double alteration = std::remainder(courseOf(leg) - problem.own.course, 2 * kPi);
-    if (std::abs(alteration) > threshold)
-      return alteration < 0.0;
+    const double alteration = wrapPi(courseOf(leg) - problem.own.course);
+    starboard = std::max(starboard, alteration);
+    port = std::max(port, -alteration);
+    legs = true;
   }
-  return std::remainder(plan.course_setpoint - problem.own.course, 2 * kPi) < -threshold;
+  if (!legs)
+    port = -wrapPi(plan.course_setpoint - problem.own.course);
+  return port > threshold && port + overshoot > starboard;
 }
 
 namespace {
@@ -154,6 +163,7 @@ struct RuleCheck {
   double land_required = 0.0;
   bool give_way = false;   // she gives way in a head-on or crossing encounter (Rules 14, 15)
   bool port_side = false;  // a ship crossing from her port side, which she stood on for (Rule 17(c))
+  bool keeps_clear = false;  // she keeps out of the way of some target (Rules 13-15)
 
   std::string broken(const Plan& p) const {
     if (!clearOfLand(p, problem, land_required))
@@ -169,21 +179,26 @@ struct RuleCheck {
     }
     if (p.status == PlanStatus::Ok && closesStandOn(p))
       return kClosesStandOn;
-    if (give_way && firstAlterationToPort(p, problem))
+    if (give_way && altersToPort(p, problem))
       return "altered to port, Rules 14/15";
-    if (port_side && firstAlterationToPort(p, problem))
+    if (port_side && altersToPort(p, problem))
       return "altered to port for a ship on the port side, Rule 17(c)";
     return "";
   }
 
   // Rule 17(a)(i): the plan takes the ship closer to a ship she stands on for than holding course and
-  // speed would, and inside the minimum separation.
+  // speed would, and inside the margin on the minimum separation. While she keeps out of the way of
+  // another ship that duty comes first (she cannot hold her course and speed for one ship and keep out
+  // of the way of another: Rules 16 and 17(d), the evaluator's reading for several ships), and the ship
+  // she stands on for is only to be passed at the minimum separation.
   bool closesStandOn(const Plan& p) const {
     if (problem.stand_on_for.empty() || !(problem.min_separation > 0.0))
       return false;
     PlanningProblem watched = problem;
     watched.targets = problem.stand_on_for;
     const double planned = planSeparation(p, watched);
+    if (keeps_clear)
+      return planned < problem.min_separation;
     return planned < kSeparationMargin * problem.min_separation &&
            planned < planSeparation(holdCoursePlan(problem, problem.stand_on_for), watched) - 1.0;
   }
@@ -221,7 +236,7 @@ std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem
   if (onlyKeepsOutOfTheWay(problem)) {
     double predicted = 0.0;
     Plan net = separationManoeuvre(whole_pass, check.land_required, "preferred distance: " + plan.message,
-                                   true, &predicted);
+                                   NetOptions::preferredDistance(), &predicted);
     if (keepsWay(net, problem) && predicted >= preferred && check.broken(net).empty()) {
       net.compute_time = spent;
       return net;
@@ -257,6 +272,7 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
   for (const auto& t : problem.targets) {
     check.give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
     check.port_side |= t.encounter == Encounter::CrossingStandOn;
+    check.keeps_clear |= keepsOutOfTheWay(t);
   }
   const bool separation_net = problem.min_separation > 0.0 && !problem.targets.empty();
   double preferred_time = 0.0;
@@ -294,10 +310,12 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
   // The rules in order of weight: land and separation are safety, a port alteration is a rule finding.
   // The net's manoeuvre tries starboard first: taken when it keeps every rule; else the port plan stays.
   if (why.rfind("altered to port", 0) == 0) {
-    Plan net = separationManoeuvre(original, check.land_required, "the plan " + why);
-    if (separation_net && check.broken(net).empty()) {
-      net.compute_time = first.compute_time;
-      return net;
+    if (separation_net) {
+      Plan net = separationManoeuvre(original, check.land_required, "the plan " + why);
+      if (check.broken(net).empty()) {
+        net.compute_time = first.compute_time;
+        return net;
+      }
     }
     first.message += " (port alteration kept: no starboard plan in " + std::to_string(retries) + " retries)";
     return first;

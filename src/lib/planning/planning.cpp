@@ -114,7 +114,10 @@ std::vector<TargetDomain> separationDomains(const PlanningProblem& problem) {
 }
 
 PlannerMode plannerMode(const ParamMap& params, const std::string& algorithm) {
-  const std::string mode = params.getString("mode", "sea");
+  return parsePlannerMode(params.getString("mode", "sea"), algorithm);
+}
+
+PlannerMode parsePlannerMode(const std::string& mode, const std::string& algorithm) {
   if (mode == "sea")
     return PlannerMode::Sea;
   if (mode != "paper")

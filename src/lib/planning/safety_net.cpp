@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -160,7 +161,7 @@ double holdUntilPast(const PlanningProblem& pr, const Eigen::Vector2d& velocity,
 // route's, else the goal). Measured from the ship's heading instead, a manoeuvre renewed at every
 // replan adds its turn again each time, and in crowded waters the ship turned full circles.
 double wayCourse(const PlanningProblem& pr) {
-  const Eigen::Vector2d next = pr.route.empty() ? pr.goal : pr.route.front();
+  const Eigen::Vector2d next = nextWayPoint(pr);
   const Eigen::Vector2d to = next - pr.own.position;
   return to.norm() > 1.0 ? courseOf(to) : pr.own.course;
 }
@@ -233,7 +234,7 @@ Plan offsetPlan(const PlanningProblem& pr, double base, double turn, double offs
   for (auto& t : there.targets)
     t.state.position += t.state.velocity() * out_time;
   // Never beyond the next point of the way (the goal or the land route's): abeam of it she turns in.
-  const Eigen::Vector2d next = pr.route.empty() ? pr.goal : pr.route.front();
+  const Eigen::Vector2d next = nextWayPoint(pr);
   const double ahead = (next - out_end).dot(courseSpeedToVelocity(base, 1.0)) - offset;
   const double parallel =
       std::min(stretch * holdUntilPast(there, courseSpeedToVelocity(base, v), there.targets),
@@ -250,24 +251,35 @@ Plan offsetPlan(const PlanningProblem& pr, double base, double turn, double offs
   return p;
 }
 
-// The offset manoeuvres in order of preference: the smaller offset first (1.1 or 1.5 x the margin on
-// the minimum separation, so that the parallel leg passes with room to spare), then the side away from
-// the overtaken ships (either is allowed, Rule 13), the smaller turn (at least 30 deg, Rule 8(b)) and
-// the shorter parallel leg.
-std::vector<Plan> offsetPlans(const PlanningProblem& pr, double base) {
+// The offset manoeuvres in order of preference, handed to `visit` until it returns true: the
+// smaller offset first (1.1 or 1.5 x the margin on the minimum separation, so that the parallel leg
+// passes with room to spare), then the side away from the overtaken ships (either is allowed, Rule 13),
+// the smaller turn (at least 30 deg, Rule 8(b)) and the shorter parallel leg.
+void visitOffsetPlans(const PlanningProblem& pr, double base, const std::function<bool(const Plan&)>& visit) {
   double abeam = 0.0;  // the overtaken ships' side of the way: + starboard
   for (const auto& t : pr.targets)
     if (t.encounter == Encounter::Overtaking)
       abeam += std::sin(courseOf(t.state.position - pr.own.position) - base);
   const double away = abeam > 0.0 ? -1.0 : 1.0;
   const double wanted = kSeparationMargin * pr.min_separation;
-  std::vector<Plan> out;
   for (double k : {1.1, 1.5})
     for (double side : {away, -away})
       for (int deg : {30, 45, 60})
         for (double stretch : {1.0, 1.5, 2.0})
-          out.push_back(offsetPlan(pr, base, side * degToRad(deg), k * wanted, stretch));
-  return out;
+          if (visit(offsetPlan(pr, base, side * degToRad(deg), k * wanted, stretch)))
+            return;
+}
+
+// Every manoeuvre the net may fly, in its order of preference (see separationManoeuvre), handed to
+// `visit` until it returns true. Built one at a time: the search mostly ends at the first few.
+void visitManoeuvres(const PlanningProblem& pr, double base, const NetOptions& options,
+                     const std::function<bool(const Plan&)>& visit) {
+  for (const Candidate& c : candidates(options.starboard_at_full_speed))
+    for (double hold : holdTimes(pr, base, c, options.until_clear))
+      if (visit(manoeuvrePlan(pr, base, c, hold)))
+        return;
+  if (options.until_clear && overtakes(pr))
+    visitOffsetPlans(pr, base, visit);
 }
 
 }  // namespace
@@ -294,7 +306,7 @@ double planSeparation(const Plan& plan, const PlanningProblem& pr) {
 namespace {
 
 Plan described(Plan p, const PlanningProblem& pr, double clearance, const std::string& why) {
-  const double turn = radToDeg(std::remainder(p.course_setpoint - pr.own.course, kTwoPi));
+  const double turn = radToDeg(wrapPi(p.course_setpoint - pr.own.course));
   const double speed = p.waypoints.size() >= 2 ? p.waypoints[1].speed : 0.0;
   const double hold = p.waypoints.size() >= 2 ? p.waypoints[1].time : 0.0;
   p.message = "separation manoeuvre (" + why + ")" +
@@ -305,44 +317,35 @@ Plan described(Plan p, const PlanningProblem& pr, double clearance, const std::s
 }  // namespace
 
 Plan separationManoeuvre(const PlanningProblem& pr, double land_clearance, const std::string& why,
-                         bool starboard_at_full_speed, double* predicted) {
+                         const NetOptions& options, double* predicted) {
   const double wanted = kSeparationMargin * pr.min_separation;
-  auto clearOfLand = [&](const Plan& p) { return routeKeepsOffLand(planRoute(p, pr), pr, land_clearance); };
+  // The first manoeuvre that keeps the margin, in the order of preference; else the first that keeps
+  // the minimum; else the one that keeps farthest, or stopping when that keeps farther still.
+  std::optional<std::pair<Plan, double>> margin, first_minimum, farthest;
+  visitManoeuvres(pr, wayCourse(pr), options, [&](const Plan& p) {
+    if (!routeKeepsOffLand(planRoute(p, pr), pr, land_clearance))
+      return false;
+    const double clearance = planSeparation(p, pr);
+    if (clearance >= wanted)
+      margin.emplace(p, clearance);
+    else if (clearance >= pr.min_separation && !first_minimum)
+      first_minimum.emplace(p, clearance);
+    if (!farthest || clearance > farthest->second)
+      farthest.emplace(p, clearance);
+    return margin.has_value();
+  });
   auto chosen = [&](const Plan& p, double clearance) {
     if (predicted)
       *predicted = clearance;
     return described(p, pr, clearance, why);
   };
-  // The first candidate that keeps the margin, in the order of preference; else the first that keeps
-  // the minimum; else the one that keeps farthest, or stopping when that keeps farther still.
-  std::optional<std::pair<Plan, double>> first_minimum, farthest;
-  const double base = wayCourse(pr);
-  for (const Candidate& c : candidates(starboard_at_full_speed))
-    for (double hold : holdTimes(pr, base, c, starboard_at_full_speed)) {
-      const Plan p = manoeuvrePlan(pr, base, c, hold);
-      if (!clearOfLand(p))
-        continue;
-      const double clearance = planSeparation(p, pr);
-      if (clearance >= wanted)
-        return chosen(p, clearance);
-      if (clearance >= pr.min_separation && !first_minimum)
-        first_minimum.emplace(p, clearance);
-      if (!farthest || clearance > farthest->second)
-        farthest.emplace(p, clearance);
-    }
-  if (starboard_at_full_speed && overtakes(pr))
-    for (const Plan& p : offsetPlans(pr, base)) {
-      if (!clearOfLand(p))
-        continue;
-      const double clearance = planSeparation(p, pr);
-      if (clearance >= wanted)
-        return chosen(p, clearance);
-    }
+  if (margin)
+    return chosen(margin->first, margin->second);
   if (first_minimum)
     return chosen(first_minimum->first, first_minimum->second);
   const double stop_clearance = routeClearance({{pr.own.position}, {}}, pr.targets, pr.prediction_horizon);
   if (!farthest || stop_clearance > farthest->second)
-    return chosen(manoeuvrePlan(pr, base, {0.0, 0.0}, 0.0), stop_clearance);
+    return chosen(manoeuvrePlan(pr, wayCourse(pr), {0.0, 0.0}, 0.0), stop_clearance);
   return chosen(farthest->first, farthest->second);
 }
 

@@ -255,6 +255,9 @@ private:
   std::vector<GiveWayDuty> giveWayDuties(const std::vector<PairHistory>& pairs) const;
   Passage passage(const Instants& both, const std::vector<Cpa>& cpas, size_t ke) const;
   void judgeGiveWay(const Passage& p, TargetResult& r, double& factor) const;
+  // Why a turn to starboard was not open at ship i's first action for ship j ("" when it was).
+  std::string starboardClosed(const Passage& p, size_t i, size_t j) const;
+  void notePortTurnForced(const Passage& p, size_t i, size_t j, TargetResult& r) const;
   void judgeStandOn(const Passage& p, TargetResult& r, double& factor,
                     const std::vector<GiveWayDuty>& duties) const;
   void finishScore(TargetResult& r, double factor) const;

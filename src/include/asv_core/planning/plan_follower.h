@@ -81,9 +81,12 @@ struct PlanFollowerConfig {
 // and separation rules too. `make` is the planner (it may throw; the exception propagates).
 Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries = 3);
-// The plan's first alteration of more than 5 deg is to port: its first leg that departs that much from
-// the present course and begins before the last target's CPA, else its course set-point. Ok plans only.
-bool firstAlterationToPort(const Plan& plan, const PlanningProblem& problem);
+// The plan takes the ship to port before the other ships are past (Rules 14, 15, 17(c)): of its legs
+// that begin before the last target's CPA, the largest departure to port of the present course is over
+// 5 deg and more than the largest to starboard less 10 deg (the evaluator judges the larger departure
+// of the flown track, which overshoots a planned leg); a plan without legs, by its course set-point. A
+// swing to starboard and back across the course to port as far counts. Ok plans only.
+bool altersToPort(const Plan& plan, const PlanningProblem& problem);
 
 // Paper mode (plannerMode, planning.h) runs the method as published: the shared rules above, the
 // follower's stand-on policy and its minimum separation are this stack's sea extensions, so they are

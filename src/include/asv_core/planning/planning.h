@@ -111,6 +111,11 @@ inline double keptSpeed(const PlanningProblem& p) {
   return p.cruise_speed > 0.0 ? p.cruise_speed : p.own.speed;
 }
 
+// The point the ship steers for next: the land route's first point, else the goal.
+inline Eigen::Vector2d nextWayPoint(const PlanningProblem& p) {
+  return p.route.empty() ? p.goal : p.route.front();
+}
+
 // Margin on PlanningProblem::min_separation: plans are made at kinematic constant-velocity prediction,
 // but the ship follows them with turn delays and the targets are tracked with noise. Our choice (10 %).
 constexpr double kSeparationMargin = 1.1;
@@ -158,6 +163,8 @@ struct Plan {
 // them). Throws std::invalid_argument on another value.
 enum class PlannerMode { Sea, Paper };
 PlannerMode plannerMode(const ParamMap& params, const std::string& algorithm);
+// The same for the value itself ("sea" or "paper"; `algorithm` names it in the error).
+PlannerMode parsePlannerMode(const std::string& mode, const std::string& algorithm);
 
 // The area round a target that a planner keeps the own ship out of, at the problem's time (for display).
 struct TargetDomain {

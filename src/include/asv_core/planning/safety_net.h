@@ -59,23 +59,32 @@ double passingHorizon(const PlanningProblem& problem);
 // for the goal: the stand-on ship's plan (Rule 17(a)(i)).
 Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTarget>& until_past);
 
+// How the separation net searches (separationManoeuvre). The defaults: every candidate, for the minimum.
+struct NetOptions {
+  // The turns to starboard at full speed only: the preferred passing distance is worth neither the
+  // ship's way nor a turn to port.
+  bool starboard_at_full_speed = false;
+  // Rule 13(d), when she overtakes: the overtaken ship clear on her way back too. Holds up to twice as
+  // long as until past (none longer than kLongestHold), and, when no turn keeps the margin, an offset:
+  // 30-60 deg to either side (away from the overtaken ships first) until 1.1 or 1.5 x the margin off the
+  // way, then parallel to the way until they are past, then the goal.
+  bool until_clear = false;
+  // How planUnderSharedRules seeks the preferred passing distance: both.
+  static NetOptions preferredDistance() { return {true, true}; }
+};
+
 // The separation net's manoeuvre: the first of these that keeps every target of the problem at least
 // kSeparationMargin x min_separation away and the track `land_clearance` off land (0: no land check),
 // in this order (COLREGs preference: Rules 8, 14-17): 30 to 90 deg to starboard at full speed, the
-// same at half speed, half speed on the way, 30 to 90 deg to port, stop; the turns are measured from
-// the course to the next point of the way (land route or goal), so a renewed manoeuvre does not add
-// its turn to the last one's. The ship holds
-// the new course until every target is past and then steers for the goal. When none keeps the margin,
-// the one that keeps the ship farthest from every target. Status Ok (Fallback when it stops); `why`
-// goes into the message. starboard_at_full_speed: the turns to starboard at full speed only (how
-// planUnderSharedRules seeks the preferred passing distance, which is worth neither the ship's way nor a
-// turn to port); when she overtakes, also held up to twice as long as until past, so that the overtaken
-// ship is clear on her way back too (Rule 13(d)); no hold longer than kLongestHold; and when no turn
-// keeps the margin, an offset: 30-60 deg to either side (away from the overtaken ships first) until 1.1
-// or 1.5 x the margin off the way, then parallel to the way until they are past, then the goal.
-// Speeds are the kept speed (keptSpeed, planning.h). `predicted`, when given, gets the returned plan's
+// same at half speed, half speed on the way, 30 to 90 deg to port, stop (as `options` narrow or widen
+// the list); the turns are measured from the course to the next point of the way (land route or goal),
+// so a renewed manoeuvre does not add its turn to the last one's. The ship holds the new course until
+// every target is past and then steers for the goal. When none keeps the margin, the first that keeps
+// the minimum; when none does, the one that keeps the ship farthest from every target, or stopping when
+// that keeps farther still. Status Ok (Fallback when it stops); `why` goes into the message. Speeds are
+// the kept speed (keptSpeed, planning.h). `predicted`, when given, gets the returned plan's
 // planSeparation, so that a caller need not fly it again.
 Plan separationManoeuvre(const PlanningProblem& problem, double land_clearance, const std::string& why,
-                         bool starboard_at_full_speed = false, double* predicted = nullptr);
+                         const NetOptions& options = {}, double* predicted = nullptr);
 
 }  // namespace asv

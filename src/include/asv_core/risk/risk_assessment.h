@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "asv_core/risk/colregs.h"
@@ -37,17 +38,24 @@ struct TargetRisk {
 class RiskAssessor {
 public:
   explicit RiskAssessor(const RiskConfig& cfg = {});
-  // Assesses one target and updates its compliance history.
+  // Assesses one target and updates its compliance history. The encounter stands as it was when the
+  // risk of collision arose (Hu's risk level 1 or 2), while that risk lasts and the target is not past:
+  // a crossing does not turn into an overtaking, or a head-on into a crossing, because one of the ships
+  // altered course (Rule 13(d) states it for overtaking; the same reading for the others).
   TargetRisk assess(const ShipState& own, const ShipState& target);
   // Assesses every target; forgets the history of targets no longer present when prune is set.
   std::vector<TargetRisk> assessAll(const ShipState& own, const std::vector<ShipState>& targets,
                                     bool prune = true);
-  void reset() { monitor_.clear(); }
+  void reset() {
+    monitor_.clear();
+    situation_.clear();
+  }
   const RiskConfig& config() const { return cfg_; }
 
 private:
   RiskConfig cfg_;
   ComplianceMonitor monitor_;
+  std::unordered_map<std::string, Encounter> situation_;  // per target: the encounter the risk arose in
 };
 
 }  // namespace asv

@@ -26,10 +26,6 @@ double uniform01(std::mt19937_64& rng) {
   return static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
-Eigen::Vector2d finalWaypoint(const PlanningProblem& p) {
-  return p.route.empty() ? p.goal : p.route.front();
-}
-
 Eigen::Vector2d unitOfCourse(double course) {
   return {std::sin(course), std::cos(course)};
 }
@@ -265,7 +261,7 @@ bool AcoEnvironment::pointDynamicFree(const Eigen::Vector2d& p, double t) const 
 // Construction graph, Fig. 6
 
 AcoGraph::AcoGraph(const PlanningProblem& problem, const AcoConfig& cfg, const AcoEnvironment& env) {
-  const Eigen::Vector2d start = problem.own.position, goal = finalWaypoint(problem);
+  const Eigen::Vector2d start = problem.own.position, goal = nextWayPoint(problem);
   const double dist = (goal - start).norm();
   u_ = dist > 0.0 ? Eigen::Vector2d((goal - start) / dist) : unitOfCourse(problem.own.course);
   n_ = Eigen::Vector2d(u_.y(), -u_.x());  // starboard of the base line
@@ -642,7 +638,7 @@ Colony::Colony(const PlanningProblem& problem, const AcoConfig& cfg, const AcoGr
       diag_(diag),
       rows_(graph.rows()),
       k_max_(graph.lateralSteps()),
-      straight_((finalWaypoint(problem) - problem.own.position).norm()),
+      straight_((nextWayPoint(problem) - problem.own.position).norm()),
       tau_(graph.vertexCount(), cfg.tau0),
       rng_(problem.seed),
       walks_(static_cast<size_t>(cfg.ants) * graph.rows()),
@@ -924,7 +920,7 @@ Plan AcoRun::colonyPlan(const AcoEnvironment& env) {
 // Lazarowska (2015), Sec. 2: (1)-(2) the input data, (3) the dangerous targets, (4) the construction
 // graph, (5) the ant colony.
 Plan AcoRun::plan() {
-  const Eigen::Vector2d goal = finalWaypoint(problem_);
+  const Eigen::Vector2d goal = nextWayPoint(problem_);
   if (const std::string why = badInput(problem_, goal); !why.empty())
     return fail(why);
   // Course alterations only (the paper has no speed manoeuvre): the present speed, or the maximum

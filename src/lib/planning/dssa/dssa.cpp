@@ -475,7 +475,7 @@ Plan DssaPlanner::plan(const PlanningProblem& problem) {
         cfg.starboard_only = true;  // Rules 14-16 (see DssaConfig::colregs)
   DssaAgent agent(0, cfg, sp);
   // Land (not in the paper): steer for the route's next point round it, never onto it.
-  const Eigen::Vector2d next = problem.route.empty() ? problem.goal : problem.route.front();
+  const Eigen::Vector2d next = nextWayPoint(problem);
   agent.setLand(&problem.obstacles, landRequirement(problem.own.position, problem.goal, problem.obstacles,
                                                     problem.min_obstacle_clearance));
   agent.setOwn(problem.own, next, problem.time);

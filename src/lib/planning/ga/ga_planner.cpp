@@ -173,7 +173,7 @@ GaFitness::GaFitness(const PlanningProblem& problem, const GaConfig& cfg) : cfg_
   candidate_cri_.zero_when_diverging = false;
   own_.id.clear();  // the candidate copies made per evaluation then never allocate
   sda_floor_ = kSeparationMargin * std::max(0.0, problem.min_separation);
-  const Eigen::Vector2d next = problem.route.empty() ? problem.goal : problem.route.front();
+  const Eigen::Vector2d next = nextWayPoint(problem);
   reference_course_ = (next - own_.position).norm() > 1e-6 ? trueBearing(own_.position, next) : own_.course;
   next_ = next;
   land_ = &problem.obstacles;

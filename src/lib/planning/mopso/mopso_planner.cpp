@@ -507,7 +507,7 @@ RuleSelection selectRule(const PlanningProblem& problem, const MopsoConfig& cfg)
   } else {
     // Section 2: re-planning also starts when an obstacle lies between two waypoints.
     const Eigen::Vector2d a = problem.own.position;
-    const Eigen::Vector2d c = problem.route.empty() ? problem.goal : problem.route.front();
+    const Eigen::Vector2d c = nextWayPoint(problem);
     for (const StaticObstacle& o : problem.obstacles)
       if (obstacleLengthInside(o, a, c) > 0.0) {
         sel.action = HuAction::GiveWay;
@@ -526,7 +526,7 @@ RuleSelection selectRule(const PlanningProblem& problem, const MopsoConfig& cfg)
 MopsoContext makeContext(const PlanningProblem& problem, const MopsoConfig& cfg, bool urgent) {
   MopsoContext ctx;
   ctx.a = problem.own.position;
-  ctx.c = problem.route.empty() ? problem.goal : problem.route.front();
+  ctx.c = nextWayPoint(problem);
   ctx.own_course = problem.own.course;
   ctx.speed = problem.own.speed >= cfg.min_speed_mps ? problem.own.speed : problem.limits.max_speed;
   // After C the ship follows its route on: to the waypoint after C, else on along A->C.
