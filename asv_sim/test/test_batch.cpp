@@ -270,8 +270,9 @@ TEST(AsvBatch, PlanLogHasARowForEveryPlan) {
   while (std::getline(f, line)) {
     std::smatch r;
     ASSERT_TRUE(std::regex_match(line, r, row_re)) << line;
-    if (rows++ == 0)
+    if (rows++ == 0) {
       EXPECT_EQ(r[1].str(), "0.0");
+    }
     EXPECT_FALSE(r[3].str().empty()) << line;
   }
   EXPECT_GT(rows, 0);
