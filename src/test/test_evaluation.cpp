@@ -20,6 +20,7 @@ struct Script {
   std::map<double, double> own_course_deg{{0.0, 0.0}};  // from time t: course
   Eigen::Vector2d tgt0{5000.0, 5000.0};
   double tgt_course_deg = 270.0, tgt_speed = 5.0;
+  std::map<double, double> tgt_turns;  // from time t: ts1's new course (none: tgt_course_deg throughout)
   double duration = 2000.0;
   struct Other {  // a further target (ts2, ts3, ...), holding course and speed
     Eigen::Vector2d p0;
@@ -58,6 +59,8 @@ RunRecorder record(const Script& s, const EvaluationConfig& cfg = {},
   for (int k = 0; k <= static_cast<int>(s.duration); ++k) {
     const double t = k;
     const double co = courseAt(s.own_course_deg, t);
+    if (!s.tgt_turns.empty() && t + 1e-9 >= s.tgt_turns.begin()->first)
+      tgts[0].course_deg = radToDeg(courseAt(s.tgt_turns, t));
     std::vector<ShipSample> ships(1 + tgts.size());
     ships[0].name = "own";
     ships[0].state.position = po;
@@ -180,6 +183,32 @@ TEST(Evaluation, Rule14NoteSaysWhetherAPortTurnWasForced) {
   EXPECT_NE(rule14(islet).find("; forced: 30 deg to starboard would have come within 0 m of islet"),
             std::string::npos)
       << rule14(islet);
+}
+
+// Rule 14 governs while the risk of collision lasts. Own ship north at 5 m/s from the origin, ts1 met
+// head-on from (0, 10000) southbound at 5 m/s (entry at t = 0: CPA 0 m in 1000 s). At t = 50 s ts1 turns
+// 60 deg to starboard (240): from (0, 9500) relative to the own ship held on 000 at 5 m/s, the relative
+// velocity is (-4.330, -7.500), 8.660 m/s, so the CPA is 950 s ahead at 9500 sin 30 = 4750 m >= 1852 m:
+// ts1 alone has removed the risk. The own ship turns 40 deg to port (320) at t = 400 s, before the
+// closest approach: by hand from (0, 2000) and ts1 at (-1515.5, 8875), relative (-1515.5, 6875) and
+// (-1.116, -6.330), the CPA is 2686 m at t = 1412 s. That turn is for no risk with ts1: no Rule 14
+// finding, range >= 2 x 926 m (safety 1), first action at 7 km (early): score 1. When ts1 turns only
+// 10 deg (190), relative velocity (-0.868, -9.924): the CPA stays 9500 x 0.868 / 9.962 = 828 m, the
+// risk lasts, and the same port turn is a Rule 14 finding.
+TEST(Evaluation, Rule14JudgesPortTurnsWhileTheRiskLasts) {
+  Script s;
+  s.tgt0 = {0.0, 10000.0};
+  s.tgt_course_deg = 180.0;
+  s.tgt_turns = {{50.0, 240.0}};
+  s.own_course_deg = {{0.0, 0.0}, {400.0, -40.0}};
+  const TargetResult removed = record(s).finish().own.targets.at(0);
+  EXPECT_EQ(removed.encounter, Encounter::HeadOn);
+  EXPECT_FALSE(hasNote(removed, "rule 14")) << removed.notes.front();
+  EXPECT_NEAR(removed.min_distance, 2686.0, 5.0);
+  EXPECT_NEAR(removed.score, 1.0, 1e-12);
+  s.tgt_turns = {{50.0, 190.0}};
+  const TargetResult lasting = record(s).finish().own.targets.at(0);
+  EXPECT_TRUE(hasNote(lasting, "rule 14: turned 40 deg to port"));
 }
 
 TEST(Evaluation, StandOnShipThatTurnsEarlyGetsTheRule17Penalty) {

@@ -36,6 +36,17 @@ asv::PlannerTarget standOnTarget(bool compliant, asv::RiskLevel risk) {
   return t;
 }
 
+// A ship met head-on: southbound at 6 m/s from (x, 6000), x metres east of the own track.
+asv::PlannerTarget headOnTarget(double x) {
+  asv::PlannerTarget t;
+  t.state.id = "ts1";
+  t.state.position = {x, 6000.0};
+  t.state.course = t.state.heading = asv::kPi;
+  t.state.speed = 6.0;
+  t.encounter = asv::Encounter::HeadOn;
+  return t;
+}
+
 asv::PlanFollower follower(bool stand_on_policy = true, bool replan_on_risk = true) {
   asv::PlanFollowerConfig c;
   c.min_separation = 926.0;
@@ -60,6 +71,34 @@ TEST(PlanFollower, StandOnKeepsOutCompliantGiveWayTargetsOnly) {
   // The policy off: every target is planned against.
   EXPECT_EQ(
       follower(false).buildProblem(0.0, {standOnTarget(true, asv::RiskLevel::Collision)}).targets.size(), 1u);
+}
+
+// The plan-clearance trigger leaves out a ship she stands on for, as the plan did. By hand: the target
+// from (-5000, 5000) east at 6 m/s and the own ship north at 6 m/s from the origin both reach (0, 5000)
+// at 833 s, so the straight plan passes her at 0 m, under 926 m. While the give-way ship is compliant and
+// not urgent the own ship stands on: no replan. Not compliant (17(a)(ii)) the 0 m pass replans; urgent
+// (17(b)) the rise replans; with the stand-on policy off the 0 m pass replans.
+TEST(PlanFollower, StandingOnDoesNotReplanForTheShipStoodOnFor) {
+  asv::Plan p;
+  p.status = asv::PlanStatus::Ok;
+  p.waypoints = {{{0.0, 0.0}, 0.0, 0.0, 6.0}, {{0.0, 20000.0}, 3333.0, 0.0, 6.0}};
+  // The clearance in the reason, sampled along the route (0 m by hand, a few metres off at the samples).
+  auto passesWithin = [](const std::string& why) {
+    const std::string lead = "plan predicted to pass within ";
+    return why.rfind(lead, 0) == 0 ? std::stod(why.substr(lead.size())) : -1.0;
+  };
+  auto after = [&](asv::PlanFollower f, const asv::PlannerTarget& now, std::string& why) {
+    f.acceptPlan(p, 0.0, {standOnTarget(true, asv::RiskLevel::Collision)}, "test");
+    return f.replanNeeded(10.0, {now}, why);
+  };
+  std::string why;
+  EXPECT_FALSE(after(follower(), standOnTarget(true, asv::RiskLevel::Collision), why)) << why;
+  EXPECT_TRUE(after(follower(), standOnTarget(false, asv::RiskLevel::Collision), why));
+  EXPECT_NEAR(passesWithin(why), 0.0, 50.0) << why;
+  EXPECT_TRUE(after(follower(), standOnTarget(true, asv::RiskLevel::Urgent), why));
+  EXPECT_EQ(why, "risk of ts1 1 -> 2");
+  EXPECT_TRUE(after(follower(false), standOnTarget(true, asv::RiskLevel::Collision), why));
+  EXPECT_NEAR(passesWithin(why), 0.0, 50.0) << why;
 }
 
 TEST(PlanFollower, PassesTheMinimumSeparationToThePlanners) {
@@ -228,12 +267,7 @@ TEST(DssaColregs, GiveWayInHeadOnSearchesStarboardOnly) {
   pr.goal = {0.0, 20000.0};
   pr.limits.max_speed = 8.0;
   pr.time_budget = 10.0;
-  asv::PlannerTarget t;
-  t.state.id = "ts1";
-  t.state.position = {150.0, 6000.0};
-  t.state.course = t.state.heading = asv::kPi;
-  t.state.speed = 6.0;
-  t.encounter = asv::Encounter::HeadOn;
+  asv::PlannerTarget t = headOnTarget(150.0);
   t.role = asv::OwnRole::GiveWay;
   t.risk = asv::RiskLevel::Collision;
   pr.targets = {t};
@@ -291,13 +325,7 @@ TEST(PlanUnderSharedRules, NoTurnToPortForAShipOnThePortSide) {
 TEST(PlanUnderSharedRules, APlanAltersToPortByItsLegsBeforeTheLastCpa) {
   asv::PlanningProblem pr;
   pr.own = own();
-  asv::PlannerTarget t;
-  t.state.id = "ts1";
-  t.state.position = {0.0, 6000.0};
-  t.state.course = t.state.heading = asv::kPi;
-  t.state.speed = 6.0;
-  t.encounter = asv::Encounter::HeadOn;
-  pr.targets = {t};
+  pr.targets = {headOnTarget(0.0)};
   auto plan = [](std::vector<std::pair<double, double>> legs) {  // (course deg, seconds) at 6 m/s
     asv::Plan p;
     p.status = asv::PlanStatus::Ok;
@@ -791,6 +819,33 @@ TEST(PlanUnderSharedRules, AnOvertakingIsJudgedOverTheWholePass) {
   EXPECT_EQ(asv::planUnderSharedRules(swing, pr).message, "swing (for the preferred distance, 1852 m)");
 }
 
+namespace {
+
+// A still ship at `at` that the own ship stands on for (left out of the problem).
+asv::PlannerTarget stillStandOnShip(const Eigen::Vector2d& at) {
+  asv::PlannerTarget still;
+  still.state.id = "still";
+  still.state.position = at;
+  still.state.speed = 0.0;
+  still.encounter = asv::Encounter::CrossingStandOn;
+  still.role = asv::OwnRole::StandOn;
+  return still;
+}
+
+// ts1 crossing from starboard, westbound from `at`: the own ship keeps out of its way (Rule 15).
+asv::PlannerTarget westboundGiveWay(const Eigen::Vector2d& at, double speed) {
+  asv::PlannerTarget crossing;
+  crossing.state.id = "ts1";
+  crossing.state.position = at;
+  crossing.state.course = crossing.state.heading = asv::degToRad(270.0);
+  crossing.state.speed = speed;
+  crossing.encounter = asv::Encounter::CrossingGiveWay;
+  crossing.role = asv::OwnRole::GiveWay;
+  return crossing;
+}
+
+}  // namespace
+
 // Rule 17(a)(i) gives way to a duty to keep out of the way. Own ship north at 6 m/s; a ship she stands
 // on for lies still at (2340.0, 2113.1): 3000 m along the 030 line and 970 m to starboard of it, 2340 m
 // off her present track. A plan that turns to 030 passes her at 970 m: closer than holding course and
@@ -802,13 +857,7 @@ TEST(PlanUnderSharedRules, TheStandOnRuleYieldsToADutyToKeepOutOfTheWay) {
   pr.own = own();
   pr.goal = {5000.0, 8660.3};
   pr.min_separation = 926.0;
-  asv::PlannerTarget still;
-  still.state.id = "still";
-  still.state.position = {2340.0, 2113.1};
-  still.state.speed = 0.0;
-  still.encounter = asv::Encounter::CrossingStandOn;
-  still.role = asv::OwnRole::StandOn;
-  pr.stand_on_for = {still};
+  pr.stand_on_for = {stillStandOnShip({2340.0, 2113.1})};
   auto turn = [](const asv::PlanningProblem& p) {
     asv::Plan plan;
     plan.status = asv::PlanStatus::Ok;
@@ -833,14 +882,40 @@ TEST(PlanUnderSharedRules, TheStandOnRuleYieldsToADutyToKeepOutOfTheWay) {
   EXPECT_NEAR(alone.course_setpoint, 0.0, 1e-9) << alone.message;
   EXPECT_NE(alone.message.find("stand on (Rule 17(a)(i))"), std::string::npos) << alone.message;
 
-  asv::PlannerTarget crossing;
-  crossing.state.id = "ts1";
-  crossing.state.position = {8000.0, 8000.0};
-  crossing.state.course = crossing.state.heading = asv::degToRad(270.0);
-  crossing.state.speed = 1.0;
-  crossing.encounter = asv::Encounter::CrossingGiveWay;
-  crossing.role = asv::OwnRole::GiveWay;
-  pr.targets = {crossing};
+  pr.targets = {westboundGiveWay({8000.0, 8000.0}, 1.0)};
   const asv::Plan duty = asv::planUnderSharedRules(turn, pr);
   EXPECT_NEAR(duty.course_setpoint, asv::degToRad(30.0), 1e-9) << duty.message;
+}
+
+// The net taken instead of a port plan keeps its margin from a ship she stands on for while she gives
+// way to another (RuleCheck::closesStandOn asks the minimum of it). Own ship north at 6 m/s for a goal
+// 20 km north; ts1 crosses from starboard, westbound from (5000, 5000) at 6 m/s (CPA 0 m at 833 s); a
+// still ship she stands on for lies 3000 m out on the 030 line, (1500, 2598.1). The planner only turns
+// 20 deg to port (refused, Rule 15). By hand, the net's turns to starboard from 000: 030 passes the
+// still ship at 0 m, 040 at 3000 sin 10 = 521 m, 050 at 3000 sin 20 = 1026 m >= 1.1 x 926 m; ts1 is
+// passed at 2988 m on 050 (relative velocity (-10.596, -3.857): 5000 x 6.739 / 11.276). So 050. Were
+// the still ship left out of the net, its first turn, 030 (ts1 at 1830 m), would run into the still
+// ship, be refused, and the port plan would stay.
+TEST(PlanUnderSharedRules, TheNetForAPortPlanKeepsClearOfAShipSheStandsOnFor) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {0.0, 20000.0};
+  pr.min_separation = 926.0;
+  pr.targets = {westboundGiveWay({5000.0, 5000.0}, 6.0)};
+  pr.targets[0].risk = asv::RiskLevel::Collision;
+  pr.stand_on_for = {stillStandOnShip({1500.0, 2598.1})};
+  auto port = [](const asv::PlanningProblem& q) {
+    asv::Plan plan;
+    plan.status = asv::PlanStatus::Ok;
+    plan.course_setpoint = asv::wrapTwoPi(q.own.course - asv::degToRad(20.0));
+    plan.speed_setpoint = q.own.speed;
+    return plan;
+  };
+  const asv::Plan p = asv::planUnderSharedRules(port, pr);
+  EXPECT_NEAR(p.course_setpoint, asv::degToRad(50.0), 1e-9) << p.message;
+  EXPECT_NE(p.message.find("separation manoeuvre (the plan altered to port, Rules 14/15)"), std::string::npos)
+      << p.message;
+  asv::PlanningProblem watched = pr;
+  watched.targets = pr.stand_on_for;
+  EXPECT_GE(asv::planSeparation(p, watched), 926.0) << p.message;
 }

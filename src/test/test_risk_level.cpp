@@ -1,8 +1,29 @@
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "asv_core/risk/risk_assessment.h"
 
 using namespace asv;
+
+namespace {
+
+// A ship with this id at p [m, east/north], on course_deg (nautical) at speed [m/s].
+ShipState ship(const std::string& id, Eigen::Vector2d p, double course_deg, double speed) {
+  ShipState s;
+  s.id = id;
+  s.position = p;
+  s.course = s.heading = degToRad(course_deg);
+  s.speed = speed;
+  return s;
+}
+
+// The own ship of the assessor tests: at the origin, north at 6 m/s.
+ShipState northbound() {
+  return ship("own", {0.0, 0.0}, 0.0, 6.0);
+}
+
+}  // namespace
 
 TEST(RiskLevel, Equations1And2) {
   const HuRiskConfig cfg;  // t_max 1200 s, d_min 1852 m, t_safe 600 s, d_safe 926 m
@@ -71,10 +92,7 @@ TEST(ComplianceMonitor, OnlyAGiveWayTargetIsFlagged) {
 TEST(ComplianceMonitor, AssessorPassesTheRole) {
   for (double side : {1.0, -1.0}) {
     RiskAssessor assessor;
-    ShipState own;
-    own.id = "own";
-    own.heading = own.course = 0.0;
-    own.speed = 6.0;
+    ShipState own = northbound();
     ShipState t;
     t.id = "t";
     // Westbound from starboard, eastbound from port.
@@ -97,19 +115,9 @@ TEST(ComplianceMonitor, AssessorPassesTheRole) {
 
 TEST(RiskAssessor, CombinesCpaCriEncounterAndFlag) {
   RiskAssessor assessor;
-  ShipState own;
-  own.id = "own";
-  own.course = own.heading = 0.0;
-  own.speed = 6.0;
-  // A target crossing from port (own ship stand-on) that keeps coming: 20 km out first.
-  auto target = [](double y_east_offset, double north) {
-    ShipState t;
-    t.id = "ts1";
-    t.position = {-y_east_offset, north};
-    t.course = t.heading = degToRad(90.0);
-    t.speed = 6.0;
-    return t;
-  };
+  ShipState own = northbound();
+  // A target crossing from port (own ship stand-on) that keeps coming.
+  auto target = [](double west, double north) { return ship("ts1", {-west, north}, 90.0, 6.0); };
   // Collision course: both reach (0, N) together when offset == N.
   TargetRisk r = assessor.assess(own, target(6000, 6000));
   EXPECT_EQ(r.geometry.encounter, Encounter::CrossingStandOn);
@@ -133,33 +141,25 @@ TEST(RiskAssessor, CombinesCpaCriEncounterAndFlag) {
 // overtaking geometry then reads as overtaking.
 TEST(RiskAssessor, TheEncounterStandsAsItWasWhenTheRiskArose) {
   RiskAssessor assessor;
-  ShipState own;
-  own.id = "own";
-  own.course = own.heading = 0.0;
-  own.speed = 6.0;
-  auto ship = [](Eigen::Vector2d p, double course_deg, double speed) {
-    ShipState t;
-    t.id = "ts1";
-    t.position = p;
-    t.course = t.heading = degToRad(course_deg);
-    t.speed = speed;
-    return t;
+  const ShipState own = northbound();
+  auto ts1 = [](Eigen::Vector2d p, double course_deg, double speed) {
+    return ship("ts1", p, course_deg, speed);
   };
-  TargetRisk r = assessor.assess(own, ship({6000.0, 6000.0}, 270.0, 6.0));
+  TargetRisk r = assessor.assess(own, ts1({6000.0, 6000.0}, 270.0, 6.0));
   EXPECT_EQ(r.geometry.encounter, Encounter::CrossingGiveWay);
   EXPECT_EQ(r.compliance.risk, RiskLevel::Collision);
-  EXPECT_EQ(classifyEncounter(own, ship({0.0, 1000.0}, 0.0, 3.0),
-                              computeCpa(own, ship({0.0, 1000.0}, 0.0, 3.0)), ColregsConfig{})
+  EXPECT_EQ(classifyEncounter(own, ts1({0.0, 1000.0}, 0.0, 3.0),
+                              computeCpa(own, ts1({0.0, 1000.0}, 0.0, 3.0)), ColregsConfig{})
                 .encounter,
             Encounter::Overtaking);
-  r = assessor.assess(own, ship({0.0, 1000.0}, 0.0, 3.0));
+  r = assessor.assess(own, ts1({0.0, 1000.0}, 0.0, 3.0));
   EXPECT_NEAR(r.cpa.tcpa, 1000.0 / 3.0, 1e-9);
   EXPECT_EQ(r.geometry.encounter, Encounter::CrossingGiveWay);
   EXPECT_EQ(r.geometry.role, OwnRole::GiveWay);
   EXPECT_EQ(r.rule, 15);
-  r = assessor.assess(own, ship({0.0, -100.0}, 0.0, 3.0));
+  r = assessor.assess(own, ts1({0.0, -100.0}, 0.0, 3.0));
   EXPECT_EQ(r.geometry.encounter, Encounter::None);
-  r = assessor.assess(own, ship({0.0, 1000.0}, 0.0, 3.0));
+  r = assessor.assess(own, ts1({0.0, 1000.0}, 0.0, 3.0));
   EXPECT_EQ(r.geometry.encounter, Encounter::Overtaking);
   EXPECT_EQ(r.rule, 13);
 }

@@ -559,10 +559,13 @@ struct RunRecorder::Passage {
   const std::vector<Cpa>& cpas;
   EncounterGeometry g;
   size_t ke = 0, kc = 0, ka = 0;
+  size_t kr = 0;  // the last sample on which a turn to port is judged (riskRemoved)
   double max_stbd = 0.0, max_port = 0.0, speed_drop = 0.0;  // [rad], [rad], [-]
   double alter_deg = 0.0;                                   // [deg] the larger turn
   const char* side = "starboard";                           // of the larger turn
-  bool port_dominant = false;  // a turn to port of at least action_course_deg, larger than to starboard
+  // Up to kr: a turn to port of at least action_course_deg, larger than to starboard.
+  bool port_dominant = false;
+  size_t own = 0, target = 0;  // the ships' indices (set by evaluatePair)
 };
 
 namespace {
@@ -608,6 +611,8 @@ RunRecorder::Passage RunRecorder::passage(const Instants& both, const std::vecto
   const double c_ref = own_e.course, v_ref = own_e.speed;
   const double act_course = degToRad(cfg_.action_course_deg);
   p.ka = both.size();
+  p.kr = riskRemoved(both, ke, p.kc);
+  double port_r = 0.0, stbd_r = 0.0;  // up to kr
   for (size_t k = ke; k <= p.kc; ++k) {
     const ShipState& s = both[k].first->s;
     const double dev = wrapPi(s.course - c_ref);
@@ -615,13 +620,40 @@ RunRecorder::Passage RunRecorder::passage(const Instants& both, const std::vecto
     p.max_stbd = std::max(p.max_stbd, dev);
     p.max_port = std::max(p.max_port, -dev);
     p.speed_drop = std::max(p.speed_drop, drop);
+    if (k <= p.kr)
+      port_r = std::max(port_r, -dev), stbd_r = std::max(stbd_r, dev);
     if (p.ka == both.size() && (std::fabs(dev) >= act_course || drop >= cfg_.action_speed_fraction))
       p.ka = k;
   }
   p.alter_deg = radToDeg(std::max(p.max_stbd, p.max_port));
   p.side = p.max_stbd >= p.max_port ? "starboard" : "port";
-  p.port_dominant = p.max_port >= act_course && p.max_port > p.max_stbd;
+  p.port_dominant = port_r >= act_course && port_r > stbd_r;
   return p;
+}
+
+// Rules 14, 15 and 17(c) govern while there is a risk of collision with the target. When the target's
+// own motion has removed it (our reading) a later turn to port, made for another ship, is not one for
+// this encounter. It is removed from sample k on when at every sample from k to kc the own ship
+// dead-reckoned from the entry on her entry course and speed (so that no action of hers counts) would
+// keep at least entry_dcpa_m from the target: the least range so far, and the CPA ahead with the target
+// holding its course and speed, both at least entry_dcpa_m. Returns the sample before k (kc when the
+// risk lasts to the closest approach).
+size_t RunRecorder::riskRemoved(const Instants& both, size_t ke, size_t kc) const {
+  const ShipState& entry = both[ke].first->s;
+  const Eigen::Vector2d v = courseSpeedToVelocity(entry.course, entry.speed);
+  auto ghost = [&](size_t k) { return entry.position + v * (both[k].first->t - both[ke].first->t); };
+  std::vector<double> least(kc + 1, kFar);  // the least range from ke to k, and the CPA ahead of k
+  double so_far = kFar;
+  for (size_t k = ke; k <= kc; ++k) {
+    const ShipState& t = both[k].second->s;
+    so_far = std::min(so_far, (ghost(k) - t.position).norm());
+    const Cpa c = computeCpa(ghost(k), v, t.position, t.velocity());
+    least[k] = std::min(so_far, c.tcpa > 0.0 ? c.dcpa : c.range);
+  }
+  size_t kr = kc;
+  for (size_t k = kc + 1; k-- > ke && least[k] >= cfg_.entry_dcpa_m;)
+    kr = k > ke ? k - 1 : ke;
+  return kr;
 }
 
 // The give-way ship (and both ships head-on): Rules 8, 14, 15 and 16.
@@ -650,12 +682,14 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
   }
   // Rules 14 and 15: starboard.
   if (p.port_dominant && p.g.encounter == Encounter::HeadOn)
-    penalise(r, factor, cfg_.penalty_port,
-             fmt("rule 14: turned %.0f deg to port in a head-on encounter", radToDeg(p.max_port)));
+    penalise(
+        r, factor, cfg_.penalty_port,
+        fmt("rule 14: turned %.0f deg to port in a head-on encounter", radToDeg(p.max_port)) + forcedNote(p));
   if (p.port_dominant && p.g.encounter == Encounter::CrossingGiveWay)
     penalise(
         r, factor, cfg_.penalty_port,
-        fmt("rule 15: turned %.0f deg to port for a ship crossing from starboard", radToDeg(p.max_port)));
+        fmt("rule 15: turned %.0f deg to port for a ship crossing from starboard", radToDeg(p.max_port)) +
+            forcedNote(p));
   if (p.g.encounter != Encounter::CrossingGiveWay)
     return;
   // Rule 15: not across the stand-on ship's bow. The first time the own ship crosses the target's
@@ -685,14 +719,14 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
 // minute), would have passed another ship (holding its course and speed) closer than the minimum
 // separation, or come within the near-miss range of land (0.1 nm by default, the planners' default
 // clearance from land).
-std::string RunRecorder::starboardClosed(const Passage& p, size_t i, size_t j) const {
+std::string RunRecorder::starboardClosed(const Passage& p) const {
   const Point& own = *p.both[p.ka].first;
   const ShipState& entry = p.both[p.ke].first->s;
   const double turn = cfg_.apparent_course_deg;
   const Eigen::Vector2d v = courseSpeedToVelocity(entry.course + degToRad(turn), entry.speed);
   const double hold = std::max(60.0, p.cpas[p.ka].tcpa);
   for (size_t k = 0; k < tracks_.size(); ++k) {
-    if (k == i || k == j)
+    if (k == p.own || k == p.target)
       continue;
     const auto& pts = tracks_[k].points;
     const auto at = std::lower_bound(pts.begin(), pts.end(), own.t - 1e-6,
@@ -715,14 +749,10 @@ std::string RunRecorder::starboardClosed(const Passage& p, size_t i, size_t j) c
   return "";
 }
 
-// A port-turn note (Rules 14, 15, 17(c)) says whether a turn to starboard was open (starboardClosed).
-void RunRecorder::notePortTurnForced(const Passage& p, size_t i, size_t j, TargetResult& r) const {
-  for (std::string& n : r.notes)
-    if (n.rfind("rule 14: turned", 0) == 0 || n.rfind("rule 15: turned", 0) == 0 ||
-        n.rfind("rule 17(c): turned", 0) == 0) {
-      const std::string why = p.ka < p.both.size() ? starboardClosed(p, i, j) : "";
-      n += why.empty() ? "; not forced: a turn to starboard was open" : "; forced: " + why;
-    }
+// The end of a port-turn note (Rules 14, 15, 17(c)): whether a turn to starboard was open.
+std::string RunRecorder::forcedNote(const Passage& p) const {
+  const std::string why = p.ka < p.both.size() ? starboardClosed(p) : "";
+  return why.empty() ? "; not forced: a turn to starboard was open" : "; forced: " + why;
 }
 
 // The stand-on ship: Rule 17 (no action before the give-way ship's action is clearly lacking; not to
@@ -760,7 +790,8 @@ void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor
   }
   if (p.ka < both.size() && p.port_dominant && p.g.encounter == Encounter::CrossingStandOn)
     penalise(r, factor, cfg_.penalty_port,
-             fmt("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(p.max_port)));
+             fmt("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(p.max_port)) +
+                 forcedNote(p));
 }
 
 void RunRecorder::finishScore(TargetResult& r, double factor) const {
@@ -839,7 +870,9 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const PairHistory& h,
     return r;
   }
   r.evaluated = true;
-  const Passage p = passage(both, h.cpas, h.ke);
+  Passage p = passage(both, h.cpas, h.ke);
+  p.own = i;
+  p.target = j;
   r.encounter = p.g.encounter;
   r.role = p.g.role;
   double factor = 1.0;
@@ -847,7 +880,6 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const PairHistory& h,
     judgeGiveWay(p, r, factor);
   else if (p.g.role == OwnRole::StandOn)
     judgeStandOn(p, r, factor, duties);
-  notePortTurnForced(p, i, j, r);
   finishScore(r, factor);
   return r;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -179,10 +180,9 @@ struct RuleCheck {
     }
     if (p.status == PlanStatus::Ok && closesStandOn(p))
       return kClosesStandOn;
-    if (give_way && altersToPort(p, problem))
-      return "altered to port, Rules 14/15";
-    if (port_side && altersToPort(p, problem))
-      return "altered to port for a ship on the port side, Rule 17(c)";
+    if ((give_way || port_side) && altersToPort(p, problem))
+      return give_way ? "altered to port, Rules 14/15"
+                      : "altered to port for a ship on the port side, Rule 17(c)";
     return "";
   }
 
@@ -203,6 +203,17 @@ struct RuleCheck {
            planned < planSeparation(holdCoursePlan(problem, problem.stand_on_for), watched) - 1.0;
   }
   static constexpr const char* kClosesStandOn = "closed a ship the own ship stands on for, Rule 17(a)(i)";
+
+  // The separation net's problem for a manoeuvre that must keep every rule (one to take instead of a
+  // port plan). While she keeps out of the way of some ship, a ship she stands on for is to be passed at
+  // the minimum separation (closesStandOn), so the net keeps its margin from it too: a manoeuvre that
+  // runs into it would be refused.
+  PlanningProblem netProblem() const {
+    PlanningProblem q = problem;
+    if (keeps_clear)
+      q.targets.insert(q.targets.end(), q.stand_on_for.begin(), q.stand_on_for.end());
+    return q;
+  }
 };
 
 // The preferred passing distance first, in open water (kOpenWater, planning.h): in a port or a channel
@@ -311,7 +322,7 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
   // The net's manoeuvre tries starboard first: taken when it keeps every rule; else the port plan stays.
   if (why.rfind("altered to port", 0) == 0) {
     if (separation_net) {
-      Plan net = separationManoeuvre(original, check.land_required, "the plan " + why);
+      Plan net = separationManoeuvre(check.netProblem(), check.land_required, "the plan " + why);
       if (check.broken(net).empty()) {
         net.compute_time = first.compute_time;
         return net;
@@ -367,15 +378,18 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   for (const auto& t : targets) {
     if (t.state.id == own_->id || !t.state.finite())
       continue;
-    // Rule 17(a)(i): the stand-on ship keeps course and speed while the give-way ship is expected to
-    // act (Hu's compliance flag) and the situation is not yet urgent (17(a)(ii), 17(b): then it acts).
-    if (cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent) {
+    if (standsOnFor(t)) {
       pr.stand_on_for.push_back(t);
       continue;
     }
     pr.targets.push_back(t);
   }
   return pr;
+}
+
+bool PlanFollower::standsOnFor(const PlannerTarget& t) const {
+  // The give-way ship is expected to act while Hu's compliance flag holds.
+  return cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent;
 }
 
 Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std::string& why,
@@ -504,7 +518,14 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
   // A plan is kept while it stays safe; periodic replanning of a safe plan would only make the ship weave.
   // The bar is plan_clearance, raised to the situation's minimum separation when there is one: a plan
   // predicted to pass inside the distance the situation demands is not safe.
-  const double clearance = predictedClearance(targets);
+  // Ships she stands on for are left out, as the plan left them out: holding course may pass one
+  // inside the minimum (the give-way ship is to act), and a new plan every replan window would only
+  // draw new searches until one slips through a turn the rules forbid. When that ship does not act, its
+  // compliance flag falls or its risk turns urgent, and it counts here again.
+  std::vector<PlannerTarget> watched;
+  std::copy_if(targets.begin(), targets.end(), std::back_inserter(watched),
+               [this](const PlannerTarget& t) { return !standsOnFor(t); });
+  const double clearance = predictedClearance(watched);
   if (clearance < std::max(cfg_.plan_clearance, cfg_.min_separation)) {
     why = "plan predicted to pass within " + std::to_string(static_cast<int>(clearance)) + " m";
     return true;

@@ -254,10 +254,12 @@ private:
   // The ships ship i had to keep out of the way of (pairs[j]: ship j's history with ship i).
   std::vector<GiveWayDuty> giveWayDuties(const std::vector<PairHistory>& pairs) const;
   Passage passage(const Instants& both, const std::vector<Cpa>& cpas, size_t ke) const;
+  // The last sample of the passage (ke to kc) before the target's own motion removed the risk.
+  size_t riskRemoved(const Instants& both, size_t ke, size_t kc) const;
   void judgeGiveWay(const Passage& p, TargetResult& r, double& factor) const;
-  // Why a turn to starboard was not open at ship i's first action for ship j ("" when it was).
-  std::string starboardClosed(const Passage& p, size_t i, size_t j) const;
-  void notePortTurnForced(const Passage& p, size_t i, size_t j, TargetResult& r) const;
+  // Why a turn to starboard was not open at the own ship's first action for the target ("" when it was).
+  std::string starboardClosed(const Passage& p) const;
+  std::string forcedNote(const Passage& p) const;
   void judgeStandOn(const Passage& p, TargetResult& r, double& factor,
                     const std::vector<GiveWayDuty>& duties) const;
   void finishScore(TargetResult& r, double factor) const;

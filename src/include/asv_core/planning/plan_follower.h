@@ -130,6 +130,10 @@ public:
 
   // The problem for the targets now (each with its risk picture).
   PlanningProblem buildProblem(double now, const std::vector<PlannerTarget>& targets) const;
+  // Rule 17(a)(i): she stands on for `t` (keeps her course and speed) while it is a compliant give-way
+  // ship and the situation is not yet urgent (17(a)(ii), 17(b): then she acts). Such a ship is left out
+  // of the problem, and out of the plan's predicted-clearance trigger.
+  bool standsOnFor(const PlannerTarget& t) const;
   bool replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why);
   // Targets of a picture taken at `stamp`, moved on to `now` at their course and speed.
   static std::vector<PlannerTarget> deadReckon(std::vector<PlannerTarget> targets, double stamp, double now);

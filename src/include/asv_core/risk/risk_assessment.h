@@ -41,7 +41,9 @@ public:
   // Assesses one target and updates its compliance history. The encounter stands as it was when the
   // risk of collision arose (Hu's risk level 1 or 2), while that risk lasts and the target is not past:
   // a crossing does not turn into an overtaking, or a head-on into a crossing, because one of the ships
-  // altered course (Rule 13(d) states it for overtaking; the same reading for the others).
+  // altered course (Rule 13(d) states it for overtaking; the same reading for the others). Both the
+  // compliance history and the standing encounter are kept by the target's id: ids must be unique, and a
+  // ship whose track is renumbered starts afresh.
   TargetRisk assess(const ShipState& own, const ShipState& target);
   // Assesses every target; forgets the history of targets no longer present when prune is set.
   std::vector<TargetRisk> assessAll(const ShipState& own, const std::vector<ShipState>& targets,
