@@ -49,8 +49,8 @@ AutopilotBridgeNode::AutopilotBridgeNode(ros::NodeHandle nh, ros::NodeHandle pnh
   if (needed > output_->capacity())
     throw std::invalid_argument("rate " + std::to_string(config_.rate) + " Hz x " +
                                 std::to_string(config_.sentences.size()) + " sentences needs up to " +
-                                std::to_string(static_cast<int>(needed * 10.0)) + " Bd; output/serial/baud is " +
-                                std::to_string(output_config_.serial_baud));
+                                std::to_string(static_cast<int>(needed * 10.0)) +
+                                " Bd; output/serial/baud is " + std::to_string(output_config_.serial_baud));
   alarm_ = std::make_unique<asv_ros::AlarmReporter>(nh_);
   cmd_sub_ = nh_.subscribe("cmd", 10, &AutopilotBridgeNode::cmdCallback, this);
   odom_sub_ = nh_.subscribe("odom", 20, &AutopilotBridgeNode::odomCallback, this);

@@ -28,7 +28,8 @@ DssaExchangeParams DssaExchangeParams::fromParams(const asv::ParamMap& ex) {
   if (p.topic.empty())
     throw std::invalid_argument("~exchange/topic must not be empty");
   if (!(p.round_timeout > 0.0) || !(p.forget_after > 0.0) || !(p.arrival_radius >= 0.0))
-    throw std::invalid_argument("~exchange/: round_timeout and forget_after must be > 0, arrival_radius >= 0");
+    throw std::invalid_argument(
+        "~exchange/: round_timeout and forget_after must be > 0, arrival_radius >= 0");
   return p;
 }
 

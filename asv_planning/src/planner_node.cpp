@@ -214,7 +214,8 @@ void PlannerNode::aidsCallback(const asv_msgs::AidToNavigationArray::ConstPtr& m
                       msg->header.frame_id.c_str(), params_.frame_id.c_str());
     return;
   }
-  const double radius = asv::pointHazardRadius(params_.aid_clearance, follower_config_.min_obstacle_clearance_m);
+  const double radius =
+      asv::pointHazardRadius(params_.aid_clearance, follower_config_.min_obstacle_clearance_m);
   std::vector<asv::StaticObstacle> hazards;
   for (const auto& a : msg->aids) {
     const Eigen::Vector2d p(a.position.x, a.position.y);
@@ -253,7 +254,8 @@ void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
   // Odometry in another frame (a GNSS/INS driver's odom or utm) is moved into map; no frame is map.
   tf2::Transform t;
   if (!msg->header.frame_id.empty() && !frames_.get(msg->header.frame_id, msg->header.stamp, t)) {
-    ROS_WARN_THROTTLE(5.0, "planner_node: odometry in frame '%s', which tf2 does not connect to '%s': ignored",
+    ROS_WARN_THROTTLE(5.0,
+                      "planner_node: odometry in frame '%s', which tf2 does not connect to '%s': ignored",
                       msg->header.frame_id.c_str(), params_.frame_id.c_str());
     return;
   }
@@ -286,7 +288,8 @@ void PlannerNode::targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg) {
 void PlannerNode::alarmCallback(const asv_msgs::Alarm::ConstPtr& msg) {
   const std::string& src = msg->source;
   const std::string base = src.substr(src.rfind('/') + 1);
-  if (std::find(params_.upstream_nodes.begin(), params_.upstream_nodes.end(), base) != params_.upstream_nodes.end())
+  if (std::find(params_.upstream_nodes.begin(), params_.upstream_nodes.end(), base) !=
+      params_.upstream_nodes.end())
     upstream_alarms_[src] = msg;
 }
 
@@ -299,10 +302,12 @@ void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) 
              msg->header.frame_id.c_str(), params_.frame_id.c_str());
     return;
   }
-  const geometry_msgs::Pose g = msg->header.frame_id.empty() ? msg->pose : asv_ros::transformPose(t, msg->pose);
+  const geometry_msgs::Pose g =
+      msg->header.frame_id.empty() ? msg->pose : asv_ros::transformPose(t, msg->pose);
   if (!std::isfinite(g.position.x) || !std::isfinite(g.position.y))
     return;
-  ROS_INFO("planner_node: new goal (%.0f, %.0f) m in %s", g.position.x, g.position.y, params_.frame_id.c_str());
+  ROS_INFO("planner_node: new goal (%.0f, %.0f) m in %s", g.position.x, g.position.y,
+           params_.frame_id.c_str());
   params_.goal = {g.position.x, g.position.y};
   params_.has_goal = true;
   if (follower_)
@@ -346,8 +351,7 @@ std::vector<asv::PlannerTarget> PlannerNode::withRisk(const std::vector<asv::Shi
                                                       bool risk_fresh) const {
   const ros::Time now = ros::Time::now();
   const AssessedTargets assessed = risk_fresh ? assessedBy(*risk_) : AssessedTargets();
-  const bool risk_alive =
-      !asv::riskBlindPlanning(risk_fresh, now.toSec(), first_input_, params_.stale_after);
+  const bool risk_alive = !asv::riskBlindPlanning(risk_fresh, now.toSec(), first_input_, params_.stale_after);
   return asv::selectPlannerTargets(params_.ship, tracks, assessed, risk_alive);
 }
 
@@ -521,16 +525,18 @@ void PlannerNode::reconfigure(PlannerConfig& c, uint32_t /*level*/) {
   params_ = next;
   follower_config_ = follower_->config();
   c = liveConfig();
-  ROS_INFO("planner_node: live parameters: planner %s (%s), min separation %.0f m, replan period %.0f s, "
-           "min replan interval %.1f s, time budget %.2f s, stand-on policy %s",
-           params_.planner.c_str(), mode_.c_str(), params_.follower.min_separation, params_.follower.replan_period,
-           params_.follower.min_replan_interval, params_.follower.time_budget,
-           params_.follower.stand_on_policy ? "on" : "off");
+  ROS_INFO(
+      "planner_node: live parameters: planner %s (%s), min separation %.0f m, replan period %.0f s, "
+      "min replan interval %.1f s, time budget %.2f s, stand-on policy %s",
+      params_.planner.c_str(), mode_.c_str(), params_.follower.min_separation, params_.follower.replan_period,
+      params_.follower.min_replan_interval, params_.follower.time_budget,
+      params_.follower.stand_on_policy ? "on" : "off");
 }
 
 // `planner` in `mode`, its parameters read from ~ again (the user may have set ~<planner>/ since the
 // start); throws when it cannot load.
-pluginlib::UniquePtr<PlannerPlugin> PlannerNode::loadPlugin(const std::string& planner, const std::string& mode) {
+pluginlib::UniquePtr<PlannerPlugin> PlannerNode::loadPlugin(const std::string& planner,
+                                                            const std::string& mode) {
   if (planner.empty() || planner == "none")
     throw std::invalid_argument("planner '" + planner + "': a running planner_node needs a planner");
   node_params_ = asv_ros::readParams(pnh_);

@@ -22,8 +22,8 @@ ros::Time fromNs(std::int64_t ns) {
   return ros::Time().fromNSec(static_cast<std::uint64_t>(std::max<std::int64_t>(0, ns)));
 }
 
-visualization_msgs::Marker marker(const std::string& frame, const ros::Time& now, const std::string& ns, int id,
-                                  int type, double x, double y) {
+visualization_msgs::Marker marker(const std::string& frame, const ros::Time& now, const std::string& ns,
+                                  int id, int type, double x, double y) {
   visualization_msgs::Marker m;
   m.header.frame_id = frame;
   m.header.stamp = now;
@@ -121,7 +121,8 @@ asv_msgs::AisSafetyMessage safetyMsg(const asv::ais::Message& m, const asv::ais:
   return s;
 }
 
-asv_msgs::AisWeather weatherMsg(std::uint32_t mmsi, const asv::ais::MetHydroReport& r, const asv::LocalFrame& frame) {
+asv_msgs::AisWeather weatherMsg(std::uint32_t mmsi, const asv::ais::MetHydroReport& r,
+                                const asv::LocalFrame& frame) {
   asv_msgs::AisWeather w;
   w.mmsi = mmsi;
   if (const auto lat = r.latDeg(), lon = r.lonDeg(); lat && lon) {
@@ -159,12 +160,13 @@ AisAuxiliary::AisAuxiliary(ros::NodeHandle nh, const asv::AisNodeConfig& config,
     : config_(config),
       frame_(frame),
       aids_(config.aids, frame),
-      sar_([&config] {
-        asv::AisTargetConfig c = config.targets;
-        c.sar_aircraft = true;
-        return c;
-      }(),
-           frame) {
+      sar_(
+          [&config] {
+            asv::AisTargetConfig c = config.targets;
+            c.sar_aircraft = true;
+            return c;
+          }(),
+          frame) {
   aids_pub_ = nh.advertise<asv_msgs::AidToNavigationArray>("ais/aids_to_navigation", 1, true);
   sar_pub_ = nh.advertise<asv_msgs::TargetArray>("ais/sar_aircraft", 10);
   safety_pub_ = nh.advertise<asv_msgs::AisSafetyMessage>("ais/safety_messages", 50);
@@ -209,7 +211,8 @@ bool AisAuxiliary::handle(const asv::ais::Message& m, const asv::ais::Payload& p
   return true;
 }
 
-void AisAuxiliary::handleWeather(const asv::ais::Message& m, const asv::ais::Payload& p, const ros::Time& stamp) {
+void AisAuxiliary::handleWeather(const asv::ais::Message& m, const asv::ais::Payload& p,
+                                 const ros::Time& stamp) {
   asv::ais::MetHydroReport r;
   if (!asv::ais::decodeMetHydro31(p, r)) {
     refuse("weather report", m.mmsi, "shorter than the 350 bits of the IMO289 fields");
@@ -247,11 +250,13 @@ void AisAuxiliary::publishSar(const ros::Time& now) {
     m.color.g = 0.5;
     m.lifetime = ros::Duration(kSarMarkerLifetime);
     markers.markers.push_back(m);
-    auto label = marker(config_.frame_id, now, "sar", 2 * id + 1, visualization_msgs::Marker::TEXT_VIEW_FACING,
-                        t.position.x, t.position.y + 2 * kSarMarkerRadius);
+    auto label =
+        marker(config_.frame_id, now, "sar", 2 * id + 1, visualization_msgs::Marker::TEXT_VIEW_FACING,
+               t.position.x, t.position.y + 2 * kSarMarkerRadius);
     label.scale.z = 15.0;
     label.color.r = label.color.g = label.color.b = 1.0;
-    label.text = "SAR " + std::to_string(t.mmsi) + " " + std::to_string(static_cast<int>(t.position.z)) + " m";
+    label.text =
+        "SAR " + std::to_string(t.mmsi) + " " + std::to_string(static_cast<int>(t.position.z)) + " m";
     label.lifetime = m.lifetime;
     markers.markers.push_back(label);
   }
@@ -279,7 +284,8 @@ void AisAuxiliary::publishMarkers(const ros::Time& now) {
   int id = 0;
   for (const auto& kv : aids_.aids()) {
     const asv::AidRecord& a = kv.second;
-    auto m = marker(frame, now, "aids", id++, visualization_msgs::Marker::CYLINDER, a.position.x(), a.position.y());
+    auto m = marker(frame, now, "aids", id++, visualization_msgs::Marker::CYLINDER, a.position.x(),
+                    a.position.y());
     m.scale.x = m.scale.y = 2 * kAidMarkerRadius;
     m.scale.z = 4.0;
     // Yellow: a physical mark; magenta, see-through: a virtual one; red: off position.
@@ -288,8 +294,8 @@ void AisAuxiliary::publishMarkers(const ros::Time& now) {
     m.color.b = a.virtual_aid && !a.off_position ? 1.0 : 0.0;
     m.color.a = a.virtual_aid ? 0.5 : 1.0;
     arr.markers.push_back(m);
-    auto label = marker(frame, now, "aids", id++, visualization_msgs::Marker::TEXT_VIEW_FACING, a.position.x(),
-                        a.position.y() + 2 * kAidMarkerRadius);
+    auto label = marker(frame, now, "aids", id++, visualization_msgs::Marker::TEXT_VIEW_FACING,
+                        a.position.x(), a.position.y() + 2 * kAidMarkerRadius);
     label.scale.z = 12.0;
     label.color.r = label.color.g = label.color.b = 1.0;
     label.text = (a.name.empty() ? std::to_string(a.mmsi) : a.name) + (a.virtual_aid ? " (V-AIS)" : "") +

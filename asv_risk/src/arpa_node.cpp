@@ -234,7 +234,8 @@ void ArpaNode::publish() {
   asv_msgs::TargetArray arr;
   arr.header.stamp = now;
   arr.header.frame_id = params_.frame_id;
-  table_.due(nanoseconds(now), [&](const asv::ArpaTarget& t, double age) { arr.targets.push_back(toMsg(t, age)); });
+  table_.due(nanoseconds(now),
+             [&](const asv::ArpaTarget& t, double age) { arr.targets.push_back(toMsg(t, age)); });
   if (arr.targets.empty())
     return;
   lockstep_.publish(targets_pub_, arr);

@@ -150,8 +150,9 @@ bool navSatToFix(const sensor_msgs::NavSatFix& msg, asv::gnss::Fix& fix, std::st
   fix = asv::gnss::Fix{};
   fix.lat_deg = msg.latitude;
   fix.lon_deg = msg.longitude;
-  fix.quality = msg.status.status == sensor_msgs::NavSatStatus::STATUS_FIX ? asv::gnss::Quality::kGnss
-                                                                           : asv::gnss::Quality::kDifferential;
+  fix.quality = msg.status.status == sensor_msgs::NavSatStatus::STATUS_FIX
+                    ? asv::gnss::Quality::kGnss
+                    : asv::gnss::Quality::kDifferential;
   if (msg.position_covariance_type != sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN) {
     const double var = std::max(msg.position_covariance[0], msg.position_covariance[4]);  // east, north
     if (!(std::isfinite(var) && var >= 0.0)) {

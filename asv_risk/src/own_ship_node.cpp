@@ -69,8 +69,8 @@ OwnShipNode::OwnShipNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   input_ = std::make_unique<NmeaInput>(
       nh_, params_.input, [this](const std::string& l, const ros::Time& t) { handleLine(l, t); });
   ROS_INFO("own_ship_node: input %s, origin %.6f %.6f, %s -> %s/base_link at %.1f Hz, own MMSI %u",
-           input_->source().c_str(), map_origin_.get().lat_deg, map_origin_.get().lon_deg, params_.frame_id.c_str(),
-           params_.ship.c_str(), params_.publish_rate, params_.own_mmsi);
+           input_->source().c_str(), map_origin_.get().lat_deg, map_origin_.get().lon_deg,
+           params_.frame_id.c_str(), params_.ship.c_str(), params_.publish_rate, params_.own_mmsi);
 }
 
 void OwnShipNode::handleLine(const std::string& line, const ros::Time& stamp) {
@@ -105,8 +105,8 @@ void OwnShipNode::subscribeNavSat() {
   fix_sub_ = nh_.subscribe("fix", 20, &OwnShipNode::fixCallback, this);
   vel_sub_ = nh_.subscribe("vel", 20, &OwnShipNode::velCallback, this);
   heading_sub_ = nh_.subscribe("heading", 20, &OwnShipNode::headingCallback, this);
-  ROS_INFO("own_ship_node: also reading %s, %s and %s", fix_sub_.getTopic().c_str(), vel_sub_.getTopic().c_str(),
-           heading_sub_.getTopic().c_str());
+  ROS_INFO("own_ship_node: also reading %s, %s and %s", fix_sub_.getTopic().c_str(),
+           vel_sub_.getTopic().c_str(), heading_sub_.getTopic().c_str());
 }
 
 void OwnShipNode::reject(const std::string& why) {

@@ -183,7 +183,8 @@ void RiskNode::fillDataState(asv_msgs::RiskAssessment& ra, double now) {
   ra.data_fault.clear();
   for (const asv::StaleInput& s : stale)
     ra.data_fault += (ra.data_fault.empty() ? "" : "; ") + s.text;
-  ra.targets_age = watch_.everReceived(targets_sub_.getTopic()) ? watch_.age(targets_sub_.getTopic(), now) : -1.0;
+  ra.targets_age =
+      watch_.everReceived(targets_sub_.getTopic()) ? watch_.age(targets_sub_.getTopic(), now) : -1.0;
   ra.odom_age = watch_.everReceived(odom_sub_.getTopic()) ? watch_.age(odom_sub_.getTopic(), now) : -1.0;
 }
 
@@ -258,7 +259,8 @@ visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssess
 visualization_msgs::Marker RiskNode::ownRiskLabel(const asv_msgs::RiskAssessment& ra, int id) const {
   const asv_msgs::TargetRisk* worst = nullptr;
   for (const asv_msgs::TargetRisk& t : ra.targets)
-    if (!worst || t.risk_level > worst->risk_level || (t.risk_level == worst->risk_level && t.cri > worst->cri))
+    if (!worst || t.risk_level > worst->risk_level ||
+        (t.risk_level == worst->risk_level && t.cri > worst->cri))
       worst = &t;
   visualization_msgs::Marker m;
   m.header = ra.header;

@@ -97,7 +97,8 @@ std::vector<std::string> inputLines() {
 }
 
 // One sentence of an `n`-bit message, zero but for the (start, width, value) fields.
-std::string sentenceWith(std::size_t n, const std::vector<std::tuple<std::size_t, int, std::uint32_t>>& fields) {
+std::string sentenceWith(std::size_t n,
+                         const std::vector<std::tuple<std::size_t, int, std::uint32_t>>& fields) {
   std::vector<int> bits(n, 0);
   for (const auto& [start, width, value] : fields)
     for (int k = 0; k < width; ++k)
@@ -162,11 +163,13 @@ protected:
     ros::NodeHandle("~").param<std::string>("mode", mode_, "udp");
     targets_sub_ = nh_.subscribe("ais/targets", 100, &AisNodeTest::targetsCb, this);
     aids_sub_ = nh_.subscribe<asv_msgs::AidToNavigationArray>(
-        "ais/aids_to_navigation", 10, [this](const asv_msgs::AidToNavigationArray::ConstPtr& m) { aids_ = *m; });
-    sar_sub_ = nh_.subscribe<asv_msgs::TargetArray>("ais/sar_aircraft", 10, [this](const asv_msgs::TargetArray::ConstPtr& m) {
-      for (const auto& t : m->targets)
-        sar_[t.mmsi] = t;
-    });
+        "ais/aids_to_navigation", 10,
+        [this](const asv_msgs::AidToNavigationArray::ConstPtr& m) { aids_ = *m; });
+    sar_sub_ = nh_.subscribe<asv_msgs::TargetArray>("ais/sar_aircraft", 10,
+                                                    [this](const asv_msgs::TargetArray::ConstPtr& m) {
+                                                      for (const auto& t : m->targets)
+                                                        sar_[t.mmsi] = t;
+                                                    });
     safety_sub_ = nh_.subscribe<asv_msgs::AisSafetyMessage>(
         "ais/safety_messages", 10, [this](const asv_msgs::AisSafetyMessage::ConstPtr& m) { safety_ = m; });
     weather_sub_ = nh_.subscribe<asv_msgs::AisWeather>(
@@ -328,7 +331,7 @@ TEST_F(AisNodeTest, AidsSarTextsAndWeatherOnTheirOwnTopics) {
   ASSERT_TRUE(sar_.count(111232511)) << "no SAR aircraft on ais/sar_aircraft";
   const asv_msgs::Target& s = sar_[111232511];
   EXPECT_EQ(s.id, "sar:111232511");
-  EXPECT_DOUBLE_EQ(s.position.z, 300.0);  // the altitude
+  EXPECT_DOUBLE_EQ(s.position.z, 300.0);                          // the altitude
   EXPECT_NEAR(s.speed_over_ground, 100 * 1852.0 / 3600.0, 1e-9);  // whole knots
   EXPECT_NEAR(s.course_over_ground, 90.0 * kDeg, 1e-9);
   EXPECT_FALSE(latest_.count(111232511)) << "a SAR aircraft is not a collision target";

@@ -20,8 +20,8 @@
 #include <geometry_msgs/QuaternionStamped.h>
 #include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Odometry.h>
-#include <sensor_msgs/NavSatFix.h>
 #include <ros/ros.h>
+#include <sensor_msgs/NavSatFix.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -148,11 +148,12 @@ TEST(OwnShipNode, NavSatFixVelocityAndHeadingTopicsToOdometry) {
   EXPECT_DOUBLE_EQ(odom->pose.covariance[0], 9.0);
   EXPECT_NEAR(odom->twist.twist.linear.x, 4.924, 1e-3);
   EXPECT_NEAR(odom->twist.twist.linear.y, 0.868, 1e-3);
-  EXPECT_NEAR(2.0 * std::atan2(odom->pose.pose.orientation.z, odom->pose.pose.orientation.w), 80.0 * M_PI / 180.0,
-              1e-6);
+  EXPECT_NEAR(2.0 * std::atan2(odom->pose.pose.orientation.z, odom->pose.pose.orientation.w),
+              80.0 * M_PI / 180.0, 1e-6);
   EXPECT_EQ(odom->child_frame_id, "navsat_own/base_link");
 
-  const auto chain = tf_buffer.lookupTransform("map", "navsat_own/base_link", odom->header.stamp, ros::Duration(1.0));
+  const auto chain =
+      tf_buffer.lookupTransform("map", "navsat_own/base_link", odom->header.stamp, ros::Duration(1.0));
   EXPECT_NEAR(chain.transform.translation.x, odom->pose.pose.position.x, 1e-6);
   EXPECT_NEAR(chain.transform.translation.y, odom->pose.pose.position.y, 1e-6);
   const auto map_odom = tf_buffer.lookupTransform("map", "navsat_odom", odom->header.stamp);

@@ -208,7 +208,8 @@ TEST_F(RiskNodeTest, AStoppedTrackerIsAnAlarmAndNeverAClearSea) {
   ASSERT_TRUE(ra);
   EXPECT_TRUE(ra->data_ok) << ra->data_fault;
   const ros::WallTime back = ros::WallTime::now();
-  while (ros::WallTime::now() - back < ros::WallDuration(1.0) && alarms.back()->level != asv_msgs::Alarm::OK) {
+  while (ros::WallTime::now() - back < ros::WallDuration(1.0) &&
+         alarms.back()->level != asv_msgs::Alarm::OK) {
     ros::WallDuration(0.05).sleep();
     ros::spinOnce();
   }

@@ -11,7 +11,6 @@ namespace asv_sim {
 
 namespace {
 
-
 asv::SimEvent::Type toCore(uint8_t type) {
   switch (type) {
     case asv_msgs::SimEvent::COLLISION:
@@ -30,7 +29,7 @@ asv::SimEvent::Type toCore(uint8_t type) {
 asv::EvaluatorNodeConfig loadEvaluatorParams(const ros::NodeHandle& pnh) {
   // evaluation/ is EvaluationConfig's: its fromParams rejects the subtree's unknown keys.
   return asv_ros::loadConfig<asv::EvaluatorNodeConfig>(pnh, "asv_sim/config/evaluator_node.yaml",
-                                                         {"evaluation/"});
+                                                       {"evaluation/"});
 }
 
 EvaluatorNode::EvaluatorNode(ros::NodeHandle nh, ros::NodeHandle pnh)

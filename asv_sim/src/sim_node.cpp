@@ -66,8 +66,8 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh_(pnh), 
   publishLand();
   scene_box_ = asv::sceneBox(sim_->scenario());
   // Not under ~: the node's own parameters are only those of sim_node.yaml (a respawn checks them).
-  nh_.setParam("sim/scene_box", std::vector<double>{scene_box_.min.x(), scene_box_.min.y(), scene_box_.max.x(),
-                                                 scene_box_.max.y()});
+  nh_.setParam("sim/scene_box", std::vector<double>{scene_box_.min.x(), scene_box_.min.y(),
+                                                    scene_box_.max.x(), scene_box_.max.y()});
   cmd_watch_ = asv::InputWatch(params_.watch);
   alarm_ = std::make_unique<asv_ros::AlarmReporter>(nh_);
   for (const auto& v : sim_->vessels()) {
@@ -250,7 +250,8 @@ void SimNode::publishState(bool odom, bool ships) {
 
 // Ship i's trail (the whole track: every other point dropped past 2000, for bounded memory), in the
 // colour of her marker `ship`.
-void SimNode::addTrail(size_t i, const visualization_msgs::Marker& ship, visualization_msgs::MarkerArray& arr) {
+void SimNode::addTrail(size_t i, const visualization_msgs::Marker& ship,
+                       visualization_msgs::MarkerArray& arr) {
   auto& trail = trails_[i];
   geometry_msgs::Point tp = ship.pose.position;
   tp.z = 0.0;
@@ -335,7 +336,8 @@ void SimNode::publishSummary() {
     dot.pose.position = point(c.target);
     dot.scale.x = dot.scale.y = dot.scale.z = 0.6 * text;
     arr.markers.push_back(dot);
-    auto label = summaryMarker("closest", id++, visualization_msgs::Marker::TEXT_VIEW_FACING, 1.0f, 0.6f, 0.6f);
+    auto label =
+        summaryMarker("closest", id++, visualization_msgs::Marker::TEXT_VIEW_FACING, 1.0f, 0.6f, 0.6f);
     label.pose.position = point(c.target, -1.2 * text);
     label.scale.z = text;
     char buf[96];
@@ -349,7 +351,8 @@ void SimNode::publishSummary() {
     dot.pose.position = point(m.position);
     dot.scale.x = dot.scale.y = dot.scale.z = 0.6 * text;
     arr.markers.push_back(dot);
-    auto label = summaryMarker("manoeuvres", id++, visualization_msgs::Marker::TEXT_VIEW_FACING, 1.0f, 0.85f, 0.1f);
+    auto label =
+        summaryMarker("manoeuvres", id++, visualization_msgs::Marker::TEXT_VIEW_FACING, 1.0f, 0.85f, 0.1f);
     label.pose.position = point(m.position, 1.2 * text);
     label.scale.z = text;
     char buf[64];
@@ -452,7 +455,8 @@ void SimNode::publishEvents(size_t from) {
       ROS_ERROR("sim_node: COLLISION between %s and %s at t = %.1f s", ev[i].a.c_str(), ev[i].b.c_str(),
                 ev[i].time);
     else if (ev[i].type == asv::SimEvent::Grounding)
-      ROS_ERROR("sim_node: GROUNDING of %s on %s at t = %.1f s", ev[i].a.c_str(), ev[i].b.c_str(), ev[i].time);
+      ROS_ERROR("sim_node: GROUNDING of %s on %s at t = %.1f s", ev[i].a.c_str(), ev[i].b.c_str(),
+                ev[i].time);
     else
       ROS_INFO("sim_node: %s %s %s at t = %.1f s (%.0f m)", asv::toString(ev[i].type), ev[i].a.c_str(),
                ev[i].b.c_str(), ev[i].time, ev[i].distance);

@@ -84,13 +84,31 @@ TEST(AsvBatch, PlannerAvoidsArrivesAndWritesEveryKey) {
   const Output o = run("--scenario " + kScenario + " --seed 1 --quiet --deterministic");
   ASSERT_EQ(o.status, 0) << o.out;
   ASSERT_EQ(std::count(o.out.begin(), o.out.end(), '\n'), 1);  // one JSON line per run
-  for (const char* key :
-       {"scenario",         "planner",      "seed",           "collision",       "min_separation_m",
-        "safety_violation", "arrived",      "time_to_goal_s", "path_length_m",   "path_ratio",
-        "manoeuvres",       "targets",      "colregs_score",  "plan_time_ms",    "wall_time_s",
-        "encounter",        "own_role",     "min_distance_m", "tcpa_at_start_s", "dcpa_at_start_m",
-        "colregs_ok",       "colregs_notes",  "collisions_between_targets", "grounding",
-        "min_obstacle_distance_m"})
+  for (const char* key : {"scenario",
+                          "planner",
+                          "seed",
+                          "collision",
+                          "min_separation_m",
+                          "safety_violation",
+                          "arrived",
+                          "time_to_goal_s",
+                          "path_length_m",
+                          "path_ratio",
+                          "manoeuvres",
+                          "targets",
+                          "colregs_score",
+                          "plan_time_ms",
+                          "wall_time_s",
+                          "encounter",
+                          "own_role",
+                          "min_distance_m",
+                          "tcpa_at_start_s",
+                          "dcpa_at_start_m",
+                          "colregs_ok",
+                          "colregs_notes",
+                          "collisions_between_targets",
+                          "grounding",
+                          "min_obstacle_distance_m"})
     EXPECT_NE(o.out.find(std::string("\"") + key + "\": "), std::string::npos) << key;
   EXPECT_NE(o.out.find("\"scenario\": \"batch_crossing\", \"planner\": \"ga\""), std::string::npos);
   EXPECT_FALSE(flag(o.out, "collision"));
@@ -182,8 +200,8 @@ TEST(AsvBatch, ChartLandGroundsAShipWithoutAPlannerAndChartsOverridesTheSource) 
   const Output none = run("--scenario " + ny + " --planner none --seed 1 --chart-cache none");
   ASSERT_EQ(none.status, 0) << none.out;
   EXPECT_TRUE(flag(none.out, "grounding")) << none.out;
-  const Output other = run("--scenario " + ny + " --planner none --seed 1 --chart-cache none --charts " + root +
-                           "/src/test/data/island.geojson");
+  const Output other = run("--scenario " + ny + " --planner none --seed 1 --chart-cache none --charts " +
+                           root + "/src/test/data/island.geojson");
   ASSERT_EQ(other.status, 0) << other.out;
   EXPECT_FALSE(flag(other.out, "grounding")) << other.out;
   const Output bad = run("--scenario " + ny + " --planner none --charts /nonexistent.geojson");

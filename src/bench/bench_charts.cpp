@@ -16,7 +16,8 @@ namespace {
 
 const asv::PlanningProblem& newYork() {
   static const asv::PlanningProblem problem = [] {
-    const asv::Scenario s = asv::loadScenario(std::string(ASV_SOURCE_DIR) + "/asv_bringup/scenarios/ny_upper_bay.yaml");
+    const asv::Scenario s =
+        asv::loadScenario(std::string(ASV_SOURCE_DIR) + "/asv_bringup/scenarios/ny_upper_bay.yaml");
     asv::PlanningProblem p;
     p.own = {s.own.name, s.own.position, s.own.course, s.own.speed, s.own.course, 120.0};
     p.goal = *s.own.goal;
@@ -30,7 +31,8 @@ const asv::PlanningProblem& newYork() {
       pt.risk = asv::RiskLevel::Collision;
       p.targets.push_back(pt);
     }
-    const double required = asv::landRequirement(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance);
+    const double required =
+        asv::landRequirement(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance);
     if (auto route = asv::landRoute(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance, required))
       p.route = *route;
     return p;
@@ -57,23 +59,37 @@ void planNewYork(benchmark::State& state, Planner planner) {
   state.counters["targets"] = static_cast<double>(problem.targets.size());
 }
 
-void BM_PlanNewYork_aco(benchmark::State& s) { planNewYork(s, asv::AcoPlanner()); }
-void BM_PlanNewYork_mopso(benchmark::State& s) { planNewYork(s, asv::MopsoPlanner()); }
-void BM_PlanNewYork_ga(benchmark::State& s) { planNewYork(s, asv::GaPlanner()); }
-void BM_PlanNewYork_dssa(benchmark::State& s) { planNewYork(s, asv::DssaPlanner("dssa")); }
-void BM_PlanNewYork_dssa_plus(benchmark::State& s) { planNewYork(s, asv::DssaPlanner("dssa_plus")); }
+void BM_PlanNewYork_aco(benchmark::State& s) {
+  planNewYork(s, asv::AcoPlanner());
+}
+void BM_PlanNewYork_mopso(benchmark::State& s) {
+  planNewYork(s, asv::MopsoPlanner());
+}
+void BM_PlanNewYork_ga(benchmark::State& s) {
+  planNewYork(s, asv::GaPlanner());
+}
+void BM_PlanNewYork_dssa(benchmark::State& s) {
+  planNewYork(s, asv::DssaPlanner("dssa"));
+}
+void BM_PlanNewYork_dssa_plus(benchmark::State& s) {
+  planNewYork(s, asv::DssaPlanner("dssa_plus"));
+}
 BENCHMARK(BM_PlanNewYork_aco)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanNewYork_mopso)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanNewYork_ga)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanNewYork_dssa)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
-BENCHMARK(BM_PlanNewYork_dssa_plus)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PlanNewYork_dssa_plus)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
 
 // The land route itself (visibility graph over the coast's convex corners, A*), made once per plan.
 void BM_LandRouteNewYork(benchmark::State& state) {
   const asv::PlanningProblem& p = newYork();
   const double required = asv::landRequirement(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance);
   for (auto _ : state)
-    benchmark::DoNotOptimize(asv::landRoute(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance, required));
+    benchmark::DoNotOptimize(
+        asv::landRoute(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance, required));
 }
 BENCHMARK(BM_LandRouteNewYork)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 

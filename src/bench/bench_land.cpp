@@ -49,7 +49,10 @@ void BM_LandQueryIndexSegment(benchmark::State& state) {
   }
   state.counters["vertices"] = static_cast<double>(c.polygon.size());
 }
-BENCHMARK(BM_LandQueryIndexSegment)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_LandQueryIndexSegment)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
 
 void BM_LandQueryIndexInside(benchmark::State& state) {
   const Coast& c = coast();

@@ -54,13 +54,20 @@ void planTargets(benchmark::State& state, Planner planner) {
     plan = planner.plan(problem);
     benchmark::DoNotOptimize(plan.course_setpoint);
   }
-  state.counters["plan_ok"] = plan.status == asv::PlanStatus::Ok ? 1.0 : 0.0;  // a failed plan is fast: say so
+  state.counters["plan_ok"] =
+      plan.status == asv::PlanStatus::Ok ? 1.0 : 0.0;  // a failed plan is fast: say so
   state.SetLabel(plan.message.substr(0, 70));
 }
 
-void BM_AcoTargets(benchmark::State& s) { planTargets(s, asv::AcoPlanner()); }
-void BM_MopsoTargets(benchmark::State& s) { planTargets(s, asv::MopsoPlanner()); }
-void BM_GaTargets(benchmark::State& s) { planTargets(s, asv::GaPlanner()); }
+void BM_AcoTargets(benchmark::State& s) {
+  planTargets(s, asv::AcoPlanner());
+}
+void BM_MopsoTargets(benchmark::State& s) {
+  planTargets(s, asv::MopsoPlanner());
+}
+void BM_GaTargets(benchmark::State& s) {
+  planTargets(s, asv::GaPlanner());
+}
 // DSSA at the sea scale every sea-mode run uses (DssaConfig::seaDefaults: a 10-minute window, 6 nm
 // detection); the preset alone is the paper's 20 s window, which sees none of these ships.
 asv::DssaPlanner seaDssa(const std::string& preset) {
@@ -69,8 +76,12 @@ asv::DssaPlanner seaDssa(const std::string& preset) {
   return planner;
 }
 
-void BM_DssaTargets(benchmark::State& s) { planTargets(s, seaDssa("dssa")); }
-void BM_DssaPlusTargets(benchmark::State& s) { planTargets(s, seaDssa("dssa_plus")); }
+void BM_DssaTargets(benchmark::State& s) {
+  planTargets(s, seaDssa("dssa"));
+}
+void BM_DssaPlusTargets(benchmark::State& s) {
+  planTargets(s, seaDssa("dssa_plus"));
+}
 
 void BM_SeparationManoeuvreTargets(benchmark::State& state) {
   const asv::PlanningProblem problem = traffic(static_cast<int>(state.range(0)));

@@ -344,8 +344,8 @@ TEST(AisArmour, RawFieldsPastTheEndAsGpsdReadsThem) {
   ASSERT_TRUE(p.append("ww"));
   p.dropFill(2);
   ASSERT_EQ(p.bits(), 10u);
-  EXPECT_EQ(p.u(8, 4), 3u);     // clipped: the 2 bits present, right-aligned
-  EXPECT_EQ(p.ur(8, 4), 15u);   // as gpsd: the fill bits as sent (11), left-aligned
+  EXPECT_EQ(p.u(8, 4), 3u);      // clipped: the 2 bits present, right-aligned
+  EXPECT_EQ(p.ur(8, 4), 15u);    // as gpsd: the fill bits as sent (11), left-aligned
   EXPECT_EQ(p.ur(8, 8), 0xF0u);  // then zeros
   EXPECT_EQ(p.sr(8, 4), -1);
   EXPECT_EQ(p.ur(12, 8), 0u);

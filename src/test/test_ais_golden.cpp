@@ -70,9 +70,9 @@ bool haveShared() {
          ::access((kLibaisDir + "typeexamples.nmea").c_str(), R_OK) == 0;
 }
 
-#define SKIP_WITHOUT_SHARED()                                                                           \
-  do {                                                                                                  \
-    if (!haveShared())                                                                                  \
+#define SKIP_WITHOUT_SHARED()                                                                              \
+  do {                                                                                                     \
+    if (!haveShared())                                                                                     \
       GTEST_SKIP() << "the public AIS corpora are not at " << kShared << "/data/ais (set ASV_SHARED_DIR)"; \
   } while (false)
 
@@ -266,11 +266,12 @@ bool hasGpsdecode() {
 // Application ids (DAC, FID) drawn for types 6 and 8: those gpsd 3.22 decodes, and some it prints
 // as raw data.
 const std::vector<std::pair<int, int>> kType6Applications = {
-    {1, 12}, {1, 14}, {1, 15}, {1, 16}, {1, 18}, {1, 20}, {1, 23}, {1, 25}, {1, 28}, {1, 30}, {1, 32},
-    {1, 40}, {200, 21}, {200, 22}, {200, 55}, {235, 10}, {250, 10}, {1, 0}, {316, 1}, {366, 56}};
+    {1, 12}, {1, 14}, {1, 15},   {1, 16},   {1, 18},   {1, 20},   {1, 23},   {1, 25}, {1, 28},  {1, 30},
+    {1, 32}, {1, 40}, {200, 21}, {200, 22}, {200, 55}, {235, 10}, {250, 10}, {1, 0},  {316, 1}, {366, 56}};
 const std::vector<std::pair<int, int>> kType8Applications = {
-    {1, 11}, {1, 13}, {1, 15}, {1, 16}, {1, 17}, {1, 19}, {1, 21}, {1, 22}, {1, 24}, {1, 25}, {1, 26},
-    {1, 27}, {1, 29}, {1, 31}, {200, 10}, {200, 23}, {200, 24}, {200, 40}, {200, 55}, {366, 56}, {1, 0}};
+    {1, 11},   {1, 13},   {1, 15},   {1, 16},   {1, 17},   {1, 19},   {1, 21},
+    {1, 22},   {1, 24},   {1, 25},   {1, 26},   {1, 27},   {1, 29},   {1, 31},
+    {200, 10}, {200, 23}, {200, 24}, {200, 40}, {200, 55}, {366, 56}, {1, 0}};
 
 // `signed_turn`: accept our scaled "turn":-x where gpsd prints x (deliberate difference 2).
 void expectSameObjects(const std::vector<Json>& ours, const std::vector<Json>& theirs,
@@ -616,11 +617,12 @@ TEST(AisGolden, LibaisTypeExamples) {
 // Keys libais prints with another meaning or wording than gpsd (whose format the CLI follows).
 bool libaisDiffers(const std::string& type, const std::string& key) {
   return key.size() > 5 && key.compare(key.size() - 5, 5, "_text") == 0 ? true  // legend wording
-         : key == "turn"                                  ? true  // libais: signed rate squared
-         : type == "9" && key == "speed"                  ? true  // libais divides by ten (see above)
-         : type == "6" && key == "retransmit"             ? true  // libais inverts the bit
-         : type == "27" && (key == "gnss" || key == "status") ? true  // inverted; gpsd prints the legend
-         : type == "21" && key == "name";                          // two six-bit codes differ (see above)
+         : key == "turn"                                                ? true  // libais: signed rate squared
+         : type == "9" && key == "speed"      ? true  // libais divides by ten (see above)
+         : type == "6" && key == "retransmit" ? true  // libais inverts the bit
+         : type == "27" && (key == "gnss" || key == "status")
+             ? true                            // inverted; gpsd prints the legend
+             : type == "21" && key == "name";  // two six-bit codes differ (see above)
 }
 
 bool isNumber(const std::string& v) {
@@ -783,16 +785,37 @@ struct Shape {
 std::vector<Shape> randomShapes() {
   std::vector<Shape> v = {
       // Types 1-3 at 163-168 bits (longer ones are a deliberate difference).
-      {1, -1, -1, 163, 168},   {2, -1, -1, 163, 168},   {3, -1, -1, 163, 168},   {4, -1, -1, 150, 400},
-      {5, -1, -1, 400, 500},   {6, -1, -1, 80, 1008},   {7, -1, -1, 60, 180},    {8, -1, -1, 50, 1008},
-      {9, -1, -1, 150, 400},   {10, -1, -1, 60, 200},   {11, -1, -1, 150, 400},  {12, -1, -1, 60, 1008},
-      {13, -1, -1, 60, 180},   {14, -1, -1, 30, 1008},  {15, -1, -1, 80, 180},   {16, -1, -1, 90, 180},
-      {17, -1, -1, 70, 830},   {18, -1, -1, 150, 400},  {19, -1, -1, 300, 500},  {20, -1, -1, 60, 200},
+      {1, -1, -1, 163, 168},
+      {2, -1, -1, 163, 168},
+      {3, -1, -1, 163, 168},
+      {4, -1, -1, 150, 400},
+      {5, -1, -1, 400, 500},
+      {6, -1, -1, 80, 1008},
+      {7, -1, -1, 60, 180},
+      {8, -1, -1, 50, 1008},
+      {9, -1, -1, 150, 400},
+      {10, -1, -1, 60, 200},
+      {11, -1, -1, 150, 400},
+      {12, -1, -1, 60, 1008},
+      {13, -1, -1, 60, 180},
+      {14, -1, -1, 30, 1008},
+      {15, -1, -1, 80, 180},
+      {16, -1, -1, 90, 180},
+      {17, -1, -1, 70, 830},
+      {18, -1, -1, 150, 400},
+      {19, -1, -1, 300, 500},
+      {20, -1, -1, 60, 200},
       // Type 21 up to the 14-character name extension of ITU-R M.1371 (see deliberate difference 3).
-      {21, -1, -1, 260, 361},  {22, -1, -1, 150, 400},  {23, -1, -1, 150, 400},  {24, -1, -1, 150, 200},
-      {25, -1, -1, 30, 180},   {26, -1, -1, 50, 1008},  {27, -1, -1, 90, 200},
+      {21, -1, -1, 260, 361},
+      {22, -1, -1, 150, 400},
+      {23, -1, -1, 150, 400},
+      {24, -1, -1, 150, 200},
+      {25, -1, -1, 30, 180},
+      {26, -1, -1, 50, 1008},
+      {27, -1, -1, 90, 200},
       // Type 27 is taken at exactly 96 or 168 bits: those lengths once more.
-      {27, -1, -1, 96, 96},    {27, -1, -1, 168, 168}};
+      {27, -1, -1, 96, 96},
+      {27, -1, -1, 168, 168}};
   for (const auto& df : kType6Applications)
     v.push_back({6, df.first, df.second, 80, 1008});
   for (const auto& df : kType8Applications)
@@ -860,8 +883,8 @@ std::string comparable(std::string line, bool gpsd) {
   if (line.find("\"dac\":1,\"fid\":16,") != std::string::npos)
     line = std::regex_replace(line, persons, "\"persons\":?");
   std::smatch m;
-  if (line.find("\"dac\":1,\"fid\":31,") != std::string::npos && line.find("\"scaled\":true") != std::string::npos &&
-      std::regex_search(line, m, level)) {
+  if (line.find("\"dac\":1,\"fid\":31,") != std::string::npos &&
+      line.find("\"scaled\":true") != std::string::npos && std::regex_search(line, m, level)) {
     const double v = std::stod(m[1].str());
     if (gpsd ? v > 1e7 : v < 0.0)
       line = std::regex_replace(line, level, "\"waterlevel\":?");
@@ -908,7 +931,8 @@ TEST(AisDifferential, RandomPayloadsOfEveryTypeMatchGpsdecode) {
       }
       // Deliberate differences 4-8.
       const std::string theirs_fixed = comparable(theirs[k], true);
-      if (comparable(ours[k], false) == theirs_fixed || comparable(unescaped(ours[k]), false) == theirs_fixed) {
+      if (comparable(ours[k], false) == theirs_fixed ||
+          comparable(unescaped(ours[k]), false) == theirs_fixed) {
         ++per_type[a.get("type")];
         ++deliberate;
         continue;
@@ -921,13 +945,16 @@ TEST(AisDifferential, RandomPayloadsOfEveryTypeMatchGpsdecode) {
   std::string summary;
   for (const auto& kv : per_type)
     summary += " type " + kv.first + ": " + std::to_string(kv.second);
-  std::printf("objects equal to gpsdecode's (-u, scaled, -s -u):%s; %zu of them only through deliberate differences 4-8\n",
-              summary.c_str(), deliberate);
+  std::printf(
+      "objects equal to gpsdecode's (-u, scaled, -s -u):%s; %zu of them only through deliberate differences "
+      "4-8\n",
+      summary.c_str(), deliberate);
   std::remove(file.c_str());
 }
 
 // Sentences of an `n`-bit message whose bits are zero but for the (start, width, value) fields.
-std::vector<std::string> messageWith(std::size_t n, const std::vector<std::tuple<std::size_t, int, std::uint32_t>>& fields) {
+std::vector<std::string> messageWith(std::size_t n,
+                                     const std::vector<std::tuple<std::size_t, int, std::uint32_t>>& fields) {
   std::vector<int> bits(n, 0);
   for (const auto& [start, width, value] : fields)
     for (int k = 0; k < width; ++k)
@@ -939,7 +966,8 @@ std::vector<std::string> messageWith(std::size_t n, const std::vector<std::tuple
 }
 
 // The CLI's output for `sentences`, one object per line.
-std::vector<Json> cliObjects(const std::string& cli, const std::string& flags, const std::vector<std::string>& sentences) {
+std::vector<Json> cliObjects(const std::string& cli, const std::string& flags,
+                             const std::vector<std::string>& sentences) {
   const std::string file = ::testing::TempDir() + "asv_ais_deliberate.nmea";
   {
     std::ofstream out(file);
@@ -957,27 +985,39 @@ TEST(AisGolden, DeliberateDifferences) {
     GTEST_SKIP() << "asv_ais_decode not built next to the tests";
   const std::uint32_t mmsi = 2300061;
   // 6: IMO236 persons on board (type 8 DAC 1 FID 16, 128 bits): 1234 persons at bit 56.
-  auto j = cliObjects(cli, "-u", messageWith(128, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 1}, {50, 6, 16}, {56, 13, 1234}}));
+  auto j = cliObjects(cli, "-u",
+                      messageWith(128, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 1}, {50, 6, 16}, {56, 13, 1234}}));
   ASSERT_EQ(j.size(), 1u);
   EXPECT_EQ(j[0].get("persons"), "1234");
   // 7: IMO289 water level (DAC 1 FID 31, 360 bits) raw 950 at bit 201: (950 - 1000) / 100 = -0.5 m.
-  j = cliObjects(cli, "", messageWith(360, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 1}, {50, 6, 31}, {201, 12, 950}}));
+  j = cliObjects(cli, "",
+                 messageWith(360, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 1}, {50, 6, 31}, {201, 12, 950}}));
   ASSERT_EQ(j.size(), 1u);
   EXPECT_EQ(j[0].get("waterlevel"), "-0.5");
   // 5: IMO289 traffic signal (DAC 1 FID 19): valid JSON with both members.
-  j = cliObjects(cli, "-u", messageWith(360, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 1}, {50, 6, 19}, {253, 5, 2}}));
+  j = cliObjects(cli, "-u",
+                 messageWith(360, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 1}, {50, 6, 19}, {253, 5, 2}}));
   ASSERT_EQ(j.size(), 1u);
   EXPECT_EQ(j[0].get("nextsignal"), "2");
   EXPECT_TRUE(j[0].has("nextsignal_text"));
   // 8: EMMA warning (DAC 200 FID 23, 256 bits): start 2021-03-14 05:09 (year - 2000 at 56, month at
   // 64, day at 68, hour at 90, minute at 95).
   j = cliObjects(cli, "-u",
-                 messageWith(256, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 200}, {50, 6, 23}, {56, 8, 21}, {64, 4, 3},
-                                   {68, 5, 14}, {90, 5, 5}, {95, 6, 9}}));
+                 messageWith(256, {{0, 6, 8},
+                                   {8, 30, mmsi},
+                                   {40, 10, 200},
+                                   {50, 6, 23},
+                                   {56, 8, 21},
+                                   {64, 4, 3},
+                                   {68, 5, 14},
+                                   {90, 5, 5},
+                                   {95, 6, 9}}));
   ASSERT_EQ(j.size(), 1u);
   EXPECT_EQ(j[0].get("start"), "2021-03-14T05:09");
   // 4: a quote in an inland country code (DAC 200 FID 24, 168 bits; six-bit 34 is '"', 1 is 'A').
-  j = cliObjects(cli, "-u", messageWith(168, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 200}, {50, 6, 24}, {56, 6, 34}, {62, 6, 1}}));
+  j = cliObjects(
+      cli, "-u",
+      messageWith(168, {{0, 6, 8}, {8, 30, mmsi}, {40, 10, 200}, {50, 6, 24}, {56, 6, 34}, {62, 6, 1}}));
   ASSERT_EQ(j.size(), 1u);
   EXPECT_EQ(j[0].get("country"), "\"A");  // parsed: the line is valid JSON
 }

@@ -43,7 +43,8 @@ bool onLand(const std::vector<Polygon>& land, const Vector2d& p) {
 }
 
 std::string tempDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("asv_test_charts_" + name + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("asv_test_charts_" + name + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
@@ -78,8 +79,10 @@ TEST(Charts, GeoJsonIslandIsWhereTheArcLengthsPutIt) {
 
 TEST(Charts, UnreachableLakeIsLandAndTheShipsLakeIsWater) {
   // The lake (54.613-54.617 N, 18.825-18.835 E) inside the island; its middle, by hand:
-  const Vector2d lake(parallelDegree(54.615) * 0.03, 0.5 * (meridianDegree(54.60) + meridianDegree(54.615)) * 0.015);
-  const Vector2d shore(parallelDegree(54.611) * 0.021, 0.5 * (meridianDegree(54.60) + meridianDegree(54.611)) * 0.011);
+  const Vector2d lake(parallelDegree(54.615) * 0.03,
+                      0.5 * (meridianDegree(54.60) + meridianDegree(54.615)) * 0.015);
+  const Vector2d shore(parallelDegree(54.611) * 0.021,
+                       0.5 * (meridianDegree(54.60) + meridianDegree(54.611)) * 0.011);
   const auto from_sea = asv::loadChartLand(fileSpec(kIsland), kGdansk, Vector2d::Zero());
   EXPECT_TRUE(onLand(from_sea, lake));  // a ship at sea cannot reach the lake: it is land to her
   EXPECT_TRUE(onLand(from_sea, shore));
@@ -152,7 +155,8 @@ TEST(Charts, ErrorsNameTheSourceAndTheLayers) {
     asv::loadChartLand(fileSpec("/nonexistent/chart.geojson"), kGdansk, Vector2d::Zero());
     FAIL() << "a missing file was accepted";
   } catch (const ChartError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/chart.geojson: cannot open"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/chart.geojson: cannot open"), std::string::npos)
+        << e.what();
   }
   ChartSpec g;
   g.source = "gshhg";
@@ -240,7 +244,8 @@ TEST(Charts, GshhgNewYorkShipsUnderWayAreAfloatToTheShorelinesAccuracy) {
       }
     }
   }
-  std::printf("%d of %d reports of ships under way on GSHHG land, %d more than 500 m in\n", on_land, total, deep);
+  std::printf("%d of %d reports of ships under way on GSHHG land, %d more than 500 m in\n", on_land, total,
+              deep);
   ASSERT_GT(total, 500);
   EXPECT_LT(on_land, total / 5);
   EXPECT_LE(deep, total / 100);
@@ -280,19 +285,24 @@ TEST(Charts, ScenarioChartsKeyErrors) {
   };
   EXPECT_NE(error("charts: {source: gshhg}\n").find("need the scenario's origin"), std::string::npos);
   const std::string origin = "origin: {lat_deg: 54.6, lon_deg: 18.8}\n";
-  EXPECT_NE(error(origin + "charts: {source: gshhg, resolution: medium}\n").find("s.yaml:5: 'charts.resolution'"),
-            std::string::npos);
+  EXPECT_NE(
+      error(origin + "charts: {source: gshhg, resolution: medium}\n").find("s.yaml:5: 'charts.resolution'"),
+      std::string::npos);
   EXPECT_NE(error(origin + "charts: {source: gshhg, radius: 3}\n").find("'charts.radius': unknown key"),
             std::string::npos);
-  EXPECT_NE(error(origin + "safety: {min_obstacle_clearance_m: 100}\ncharts: {source: gshhg, clearance_m: 150}\n")
-                .find("given under safety already"),
-            std::string::npos);
+  EXPECT_NE(
+      error(origin + "safety: {min_obstacle_clearance_m: 100}\ncharts: {source: gshhg, clearance_m: 150}\n")
+          .find("given under safety already"),
+      std::string::npos);
 }
 
 TEST(Charts, OwnShipOnLandIsAnError) {
-  const std::string yaml = "format: 1\nname: x\nduration_s: 600\norigin: {lat_deg: 54.6, lon_deg: 18.8}\n"
-                           "charts: {source: " + kIsland + ", radius_m: 5000}\n"
-                           "own_ship: {name: own, position: {x_m: 1500, y_m: 1300}, course_deg: 0, speed_mps: 5}\n";
+  const std::string yaml =
+      "format: 1\nname: x\nduration_s: 600\norigin: {lat_deg: 54.6, lon_deg: 18.8}\n"
+      "charts: {source: " +
+      kIsland +
+      ", radius_m: 5000}\n"
+      "own_ship: {name: own, position: {x_m: 1500, y_m: 1300}, course_deg: 0, speed_mps: 5}\n";
   asv::Scenario s = asv::parseScenario(yaml, "s.yaml");
   asv::ChartOptions o;
   o.cache_dir = "none";

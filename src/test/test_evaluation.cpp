@@ -480,8 +480,8 @@ TEST(Evaluation, JsonIsDeterministicWithFixedKeysAndNullForUnknowns) {
             std::string::npos);
   // Key order of the whole object (docs/evaluation.md).
   size_t pos = 0;
-  for (const char* key : {"scenario", "planner", "seed", "collision", "collisions_between_targets", "grounding",
-                          "min_obstacle_distance_m", "min_separation_m", "safety_violation",
+  for (const char* key : {"scenario", "planner", "seed", "collision", "collisions_between_targets",
+                          "grounding", "min_obstacle_distance_m", "min_separation_m", "safety_violation",
                           "arrived", "time_to_goal_s", "path_length_m", "path_ratio", "manoeuvres", "targets",
                           "colregs_score", "plan_time_ms", "wall_time_s"}) {
     const size_t at = ja.find(std::string("\"") + key + "\":", pos);

@@ -37,9 +37,9 @@ TEST(Geometry, PolygonDistanceByHand) {
 }
 
 TEST(Geometry, SegmentObstacleDistanceCountsALegInsideAsTouching) {
-  EXPECT_DOUBLE_EQ(segmentObstacleDistance(kIsland, {100, 100}, {900, 900}), 0.0);   // wholly inside
-  EXPECT_NEAR(segmentPolygonDistance(kIsland, {100, 100}, {900, 900}), 100.0, 1e-9);  // boundary only
-  EXPECT_DOUBLE_EQ(segmentObstacleDistance(kIsland, {-500, 500}, {1500, 500}), 0.0);  // across
+  EXPECT_DOUBLE_EQ(segmentObstacleDistance(kIsland, {100, 100}, {900, 900}), 0.0);         // wholly inside
+  EXPECT_NEAR(segmentPolygonDistance(kIsland, {100, 100}, {900, 900}), 100.0, 1e-9);       // boundary only
+  EXPECT_DOUBLE_EQ(segmentObstacleDistance(kIsland, {-500, 500}, {1500, 500}), 0.0);       // across
   EXPECT_NEAR(segmentObstacleDistance(kIsland, {-500, 1300}, {1500, 1300}), 300.0, 1e-9);  // north of it
 }
 

@@ -23,7 +23,8 @@ namespace {
 void flatten(const YAML::Node& n, const std::string& key, ParamMap& out) {
   if (n.IsMap()) {
     for (const auto& kv : n)
-      flatten(kv.second, key.empty() ? kv.first.as<std::string>() : key + "/" + kv.first.as<std::string>(), out);
+      flatten(kv.second, key.empty() ? kv.first.as<std::string>() : key + "/" + kv.first.as<std::string>(),
+              out);
   } else if (n.IsSequence()) {
     std::vector<std::string> items;
     for (const auto& i : n)
@@ -110,8 +111,11 @@ TEST(NodeConfigs, IngestionOriginIsWholeOrAbsent) {
   const auto none = asv::AisNodeConfig::fromParams(ParamMap());
   EXPECT_FALSE(none.has_origin);
   EXPECT_TRUE(none.origin_scenario.empty());
-  EXPECT_THROW(asv::AisNodeConfig::fromParams(ParamMap(std::map<std::string, std::string>{{"origin_lat_deg", "54.6"}})), std::invalid_argument);
-  EXPECT_NO_THROW(asv::ArpaNodeConfig::fromParams(ParamMap(std::map<std::string, std::string>{{"origin_scenario", "head_on.yaml"}})));
+  EXPECT_THROW(asv::AisNodeConfig::fromParams(
+                   ParamMap(std::map<std::string, std::string>{{"origin_lat_deg", "54.6"}})),
+               std::invalid_argument);
+  EXPECT_NO_THROW(asv::ArpaNodeConfig::fromParams(
+      ParamMap(std::map<std::string, std::string>{{"origin_scenario", "head_on.yaml"}})));
   EXPECT_THROW(asv::ArpaNodeConfig::fromParams(ParamMap({{"origin_lat_deg", "91"}, {"origin_lon_deg", "0"}})),
                std::invalid_argument);
 }
@@ -129,7 +133,7 @@ TEST(NodeConfigs, EvaluatorNodeYamlIsTheCodesKeySet) {
   ParamMap y = loadYaml("asv_sim/config/evaluator_node.yaml");
   const auto c = asv::EvaluatorNodeConfig::fromParams(y);
   EXPECT_EQ(unknown(y, {"evaluation/"}), "");  // the subtree is checked by EvaluationConfig
-  EXPECT_DOUBLE_EQ(c.time_origin, 1.0e9);  // sim_node's epoch (a YAML 1.1 "1.0e9" would be text)
+  EXPECT_DOUBLE_EQ(c.time_origin, 1.0e9);      // sim_node's epoch (a YAML 1.1 "1.0e9" would be text)
 }
 
 TEST(NodeConfigs, TypedValuesAreRefusedWithTheParameterName) {

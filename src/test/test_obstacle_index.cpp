@@ -20,8 +20,8 @@ TEST(ObstacleIndex, ByHandOnASquareWithANotch) {
   const ObstacleIndex idx({p});
   EXPECT_EQ(idx.edges(), 8u);
   EXPECT_TRUE(idx.inside({10, 10}));
-  EXPECT_FALSE(idx.inside({50, 70}));  // in the notch
-  EXPECT_TRUE(idx.inside({100, 50}));  // on the boundary
+  EXPECT_FALSE(idx.inside({50, 70}));                       // in the notch
+  EXPECT_TRUE(idx.inside({100, 50}));                       // on the boundary
   EXPECT_DOUBLE_EQ(idx.distance(Vector2d(50, 70)), 10.0);   // to either side of the notch
   EXPECT_DOUBLE_EQ(idx.distance(Vector2d(50, 45)), 5.0);    // to its bottom
   EXPECT_DOUBLE_EQ(idx.distance(Vector2d(103, 104)), 5.0);  // 3-4-5 to the corner
@@ -79,7 +79,8 @@ TEST(PointHazard, AnAidIsAnOctagonRoundItsClearanceCircle) {
   EXPECT_TRUE(asv::insideObstacle(o, c + Eigen::Vector2d(0.0, r - 0.01)));  // the circle is inside
   EXPECT_FALSE(asv::insideObstacle(o, c + Eigen::Vector2d(0.0, r / std::cos(M_PI / 8) + 0.01)));
   // A leg passing 300 m from the aid is 185.2 m from the octagon at least (here: at an edge's middle).
-  const double d = asv::obstacleDistance(o, c + Eigen::Vector2d(-5000.0, 300.0), c + Eigen::Vector2d(5000.0, 300.0));
+  const double d =
+      asv::obstacleDistance(o, c + Eigen::Vector2d(-5000.0, 300.0), c + Eigen::Vector2d(5000.0, 300.0));
   EXPECT_NEAR(d, 300.0 - r, 1e-6);
   // Radius 0 still gives a point an inside (1 m).
   EXPECT_TRUE(asv::insideObstacle(asv::pointHazard("aid:2", c, 0.0), c + Eigen::Vector2d(0.5, 0.0)));

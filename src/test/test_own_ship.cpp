@@ -143,7 +143,7 @@ TEST(OwnShip, ReceiverFixVelocityAndHeadingFromOtherSources) {
   ASSERT_TRUE(s);
   EXPECT_NEAR(s->position.x(), 0.0, 0.01);
   EXPECT_NEAR(s->position.y(), 111.193 + 5.0, 0.01);  // dead-reckoned 1 s
-  EXPECT_DOUBLE_EQ(s->position_sigma, 3.0);            // the receiver's, not HDOP x 4 m
+  EXPECT_DOUBLE_EQ(s->position_sigma, 3.0);           // the receiver's, not HDOP x 4 m
   EXPECT_EQ(s->position_source, "NavSatFix");
   EXPECT_NEAR(asv::radToDeg(s->heading), 10.0, 1e-9);
   EXPECT_FALSE(s->heading_from_cog);

@@ -428,10 +428,12 @@ TEST(PlanUnderSharedRules, APlanOverLandIsRefusedAndReplanned) {
   EXPECT_NEAR(asv::trackObstacleDistance(asv::landTrack(p, pr.own.position, 1e5), pr.obstacles), 343.0, 0.1);
   // A planner that only goes straight: no plan keeps clear, the result is NoSolution (the fallback).
   calls = 0;
-  p = asv::planUnderSharedRules([&](const asv::PlanningProblem&) {
-    ++calls;
-    return waypointPlan({{0, 0}, {0, 4000}});
-  }, pr);
+  p = asv::planUnderSharedRules(
+      [&](const asv::PlanningProblem&) {
+        ++calls;
+        return waypointPlan({{0, 0}, {0, 4000}});
+      },
+      pr);
   EXPECT_EQ(calls, 4);
   EXPECT_EQ(p.status, asv::PlanStatus::NoSolution);
   // Without a clearance requirement the straight plan stands.
@@ -464,10 +466,11 @@ TEST(PlanUnderSharedRules, APlannersFallbackPlanOverLandIsRefusedToo) {
 TEST(PlanUnderSharedRules, LandRequirementLetsAShipInsideTheClearanceMove) {
   const std::vector<asv::StaticObstacle> land = {island()};
   const Eigen::Vector2d far_goal(0.0, -10000.0);
-  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 0.0}, far_goal, land, 185.2), 185.2);  // 1 km off: the clearance
-  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 900.0}, far_goal, land, 185.2), 50.0);  // 100 m off: half
+  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 0.0}, far_goal, land, 185.2),
+                   185.2);  // 1 km off: the clearance
+  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 900.0}, far_goal, land, 185.2), 50.0);    // 100 m off: half
   EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 0.0}, {0.0, 960.0}, land, 185.2), 20.0);  // a berth 40 m off
-  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 900.0}, far_goal, {}, 185.2), 0.0);     // no land
+  EXPECT_DOUBLE_EQ(asv::landRequirement({0.0, 900.0}, far_goal, {}, 185.2), 0.0);       // no land
   // Land beyond the reach is a later plan's: 800 m of a northbound track stop short of the shore.
   EXPECT_DOUBLE_EQ(asv::trackObstacleDistance(asv::truncateTrack({{0, 0}, {0, 4000}}, 800.0), land), 200.0);
   // A course-only plan is judged over its reach (speed x horizon, here 6 km): north, over the island.
@@ -590,9 +593,8 @@ TEST(LandRoute, TheFollowersProblemCarriesTheRouteRoundLand) {
 // inside, and the ship arrives from off the axis. The only way in keeps 200 m from both heads, through
 // the gap's middle (0, 40) or (0, 80)-(0, 0): not round the 2.4 km breakwater.
 TEST(LandRoute, ThroughAHarbourEntranceNotRoundTheBreakwater) {
-  const std::vector<asv::StaticObstacle> port = {
-      {"west", {{-2600, 0}, {-200, 0}, {-200, 80}, {-2600, 80}}},
-      {"east", {{200, 0}, {2600, 0}, {2600, 80}, {200, 80}}}};
+  const std::vector<asv::StaticObstacle> port = {{"west", {{-2600, 0}, {-200, 0}, {-200, 80}, {-2600, 80}}},
+                                                 {"east", {{200, 0}, {2600, 0}, {2600, 80}, {200, 80}}}};
   const auto route = asv::landRoute({-500.0, 8000.0}, {0.0, -1500.0}, port, 185.2, 185.2);
   ASSERT_TRUE(route.has_value());
   ASSERT_FALSE(route->empty());
@@ -725,7 +727,8 @@ TEST(PlanUnderSharedRules, OpenWaterAsksForThePreferredDistanceFirst) {
     p.status = asv::PlanStatus::Ok;
     p.course_setpoint = asv::degToRad(90.0);
     p.speed_setpoint = v;
-    p.waypoints = {{{0.0, 0.0}, 0.0, asv::degToRad(90.0), v}, {{12000.0, 0.0}, 12000.0 / v, asv::degToRad(90.0), v}};
+    p.waypoints = {{{0.0, 0.0}, 0.0, asv::degToRad(90.0), v},
+                   {{12000.0, 0.0}, 12000.0 / v, asv::degToRad(90.0), v}};
     return p;
   };
   // Open water: one call, for 2 x 926 m; its plan is the answer.

@@ -79,8 +79,8 @@ TEST(PlannerModes, PaperModeIsThePublishedMethod) {
   EXPECT_FALSE(aco.config().smooth);
   const auto d = aco.domains(problemWith(asv::Encounter::HeadOn, 926.0));
   ASSERT_EQ(d.size(), 1u);
-  for (const Eigen::Vector2d& v : {Eigen::Vector2d(0.0, 8148.0), Eigen::Vector2d(-1111.2, 10000.0),
-                                   Eigen::Vector2d(463.0, 10000.0)})
+  for (const Eigen::Vector2d& v :
+       {Eigen::Vector2d(0.0, 8148.0), Eigen::Vector2d(-1111.2, 10000.0), Eigen::Vector2d(463.0, 10000.0)})
     EXPECT_TRUE(hasVertex(d[0].polygon, v)) << v.transpose();
 
   // Lazarowska (2015) plans once; the other three papers replan.
@@ -93,7 +93,7 @@ TEST(PlannerModes, PaperModeIsThePublishedMethod) {
   EXPECT_EQ(ga.elite_count, 0);
   EXPECT_EQ(ga.safety_penalty + ga.colregs_penalty + ga.new_risk_penalty + ga.turn_penalty, 0.0);
   EXPECT_EQ(asv::GaConfig::fromParams({}).elite_count, 1);  // sea, the default
-  EXPECT_TRUE(ga.cri.as_printed);  // eq. (3) and (4) as printed
+  EXPECT_TRUE(ga.cri.as_printed);                           // eq. (3) and (4) as printed
   EXPECT_FALSE(asv::GaConfig::fromParams({}).cri.as_printed);
 
   asv::ParamMap other;

@@ -105,7 +105,8 @@ TEST(SafetyNet, AStraightOnPlanIntoAHeadOnShipIsReplacedByAStarboardManoeuvre) {
   pr.targets[0].encounter = Encounter::None;
   calls = 0;
   p = planUnderSharedRules(straight, pr);
-  EXPECT_EQ(calls, 5);  // the preferred distance (open water), the first plan and three retries, all straight on
+  EXPECT_EQ(calls,
+            5);  // the preferred distance (open water), the first plan and three retries, all straight on
   EXPECT_EQ(p.status, PlanStatus::Ok);
   EXPECT_NE(p.message.find("separation manoeuvre (every plan in 4 tries"), std::string::npos) << p.message;
   // The first preference: 30 deg to starboard (Rule 14, readily apparent by Rule 8), at full speed.

@@ -195,8 +195,9 @@ TEST(ScenarioFromAis, WindowBecomesTargetsPlacedByInterpolation) {
   EXPECT_EQ(back.targets[0].mmsi, 111111111u);
   // A berth the chart draws as land: the stopped vessel on it is left out, the moving one is kept.
   const Eigen::Vector2d berth = still.position;
-  o.land = {{"land 1", {berth + Eigen::Vector2d(-50, -50), berth + Eigen::Vector2d(50, -50),
-                        berth + Eigen::Vector2d(50, 50), berth + Eigen::Vector2d(-50, 50)}}};
+  o.land = {{"land 1",
+             {berth + Eigen::Vector2d(-50, -50), berth + Eigen::Vector2d(50, -50),
+              berth + Eigen::Vector2d(50, 50), berth + Eigen::Vector2d(-50, 50)}}};
   const AisScenarioResult on_land = scenarioFromAis(log, o);
   ASSERT_EQ(on_land.scenario.targets.size(), 1u);
   EXPECT_EQ(on_land.scenario.targets[0].name, "north_bound");

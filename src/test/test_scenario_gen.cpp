@@ -56,9 +56,9 @@ TEST(ScenarioGen, SameSeedAndIndexGiveTheSameFileByteForByte) {
 TEST(ScenarioGen, SingleTargetEncountersAreWhereTheClassSays) {
   const double dcpa_max = kCfg.dcpa_max_m + 5.0;  // + rounding of positions, courses and speeds
   for (uint64_t i = 0; i < 12; ++i) {
-    for (SituationClass c : {SituationClass::HeadOn, SituationClass::CrossingGiveWay,
-                             SituationClass::CrossingStandOn, SituationClass::Overtaking,
-                             SituationClass::Overtaken}) {
+    for (SituationClass c :
+         {SituationClass::HeadOn, SituationClass::CrossingGiveWay, SituationClass::CrossingStandOn,
+          SituationClass::Overtaking, SituationClass::Overtaken}) {
       const Scenario s = generateScenario(kCfg, c, 5, i).scenario;
       ASSERT_EQ(s.targets.size(), 1u);
       const ScenarioShip& t = s.targets[0];
@@ -123,7 +123,8 @@ TEST(ScenarioGen, RuleBreakersConvergingTrafficAndCoasts) {
     EXPECT_DOUBLE_EQ(co.min_obstacle_clearance, kCfg.obstacle_clearance_m);
     for (const auto& o : co.obstacles) {
       EXPECT_GE(obstacleDistance(o, *co.own.goal, *co.own.goal), kCfg.obstacle_clearance_m) << co.name;
-      EXPECT_GE(obstacleDistance(o, co.own.position, co.own.position), 1852.0 - 0.2 * 1852.0 - 1.0) << co.name;
+      EXPECT_GE(obstacleDistance(o, co.own.position, co.own.position), 1852.0 - 0.2 * 1852.0 - 1.0)
+          << co.name;
     }
   }
   EXPECT_EQ(port_turns + stand_ons, 10);
@@ -158,7 +159,8 @@ TEST(ScenarioGen, AnImpossibleConfigurationFailsLoudlyAfterItsRedraws) {
 }
 
 TEST(ScenarioWrite, ALibraryScenarioSurvivesTheRoundTripWithinItsRounding) {
-  const Scenario a = loadScenario(std::string(ASV_SOURCE_DIR) + "/asv_bringup/scenarios/crossing_give_way.yaml");
+  const Scenario a =
+      loadScenario(std::string(ASV_SOURCE_DIR) + "/asv_bringup/scenarios/crossing_give_way.yaml");
   const Scenario b = parseScenario(scenarioToYaml(a));
   EXPECT_EQ(b.name, a.name);
   EXPECT_EQ(b.description, a.description);

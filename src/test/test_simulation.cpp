@@ -115,7 +115,7 @@ TEST(Simulation, GiveWayTargetTurnsToStarboardNonCompliantStandsOn) {
   run(sim, 1200.0);
   EXPECT_FALSE(sim.collided());
   EXPECT_GT(sim.minSeparationOwn(), 1852.0 - 100.0);  // the turn takes its time: a little inside
-  EXPECT_FALSE(sim.find("gw")->giving_way);  // resumed after passing
+  EXPECT_FALSE(sim.find("gw")->giving_way);           // resumed after passing
   Simulation nc(
       parseScenario(scenarioYaml("  - {name: nc, position: {x_m: -3000, y_m: 3000}, course_deg: 90, "
                                  "speed_mps: 5, behaviour: non_compliant}\n")));

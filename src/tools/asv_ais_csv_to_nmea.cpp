@@ -32,7 +32,8 @@ const char* const kUsage =
     "each report becomes a type 1 (class A) or type 18 (class B) position report, and each vessel's\n"
     "static data (name, length and beam: type 5 for class A, type 24 parts A and B for class B) is sent\n"
     "at her first report and again every --static-every seconds. Every sentence carries an NMEA 4 tag\n"
-    "block with the report's time (c:, UNIX seconds) and the source (s:csv, s:gpsd), the form ais_node's file\n"
+    "block with the report's time (c:, UNIX seconds) and the source (s:csv, s:gpsd), the form ais_node's "
+    "file\n"
     "input and nmea_to_bag.py read. The log's defects are repaired as asv_scenario_from_ais does: COG < 0\n"
     "is a 12-bit wrap (+409.6), COG 360, SOG 102.3 and Heading 511 are 'not available'; unreadable rows\n"
     "are refused and counted on stderr. The reference point is taken as the middle of the hull.\n"
@@ -159,7 +160,8 @@ std::optional<double> timeOf(const std::string& text) {
   try {
     double t = parseUtcTime(text.substr(0, 19));
     const std::string rest = text.substr(19);
-    if (!rest.empty() && rest[0] == '.' && toolNumber("0" + rest.substr(0, rest.find_first_not_of("0123456789", 1)), x))
+    if (!rest.empty() && rest[0] == '.' &&
+        toolNumber("0" + rest.substr(0, rest.find_first_not_of("0123456789", 1)), x))
       t += x;
     return t;
   } catch (const std::invalid_argument&) {
@@ -214,8 +216,9 @@ bool takePosition(const YAML::Node& o, AisLogReport& r) {
 
 // One JSON object of the log at `time` (empty: untimed): a report appended to `log`, or a static
 // report or TPV taken; anything else counted in `stats`.
-void takeObject(const YAML::Node& o, std::optional<double>& time, std::map<std::uint32_t, GpsdStatic>& statics,
-                std::vector<AisLogReport>& log, AisLogStats& stats) {
+void takeObject(const YAML::Node& o, std::optional<double>& time,
+                std::map<std::uint32_t, GpsdStatic>& statics, std::vector<AisLogReport>& log,
+                AisLogStats& stats) {
   const std::string cls = o["class"] ? o["class"].as<std::string>() : "";
   if (cls == "TPV") {
     if (o["time"])
@@ -313,8 +316,8 @@ int run(const Args& a) {
   std::size_t refused = 0;
   for (const auto& kv : stats.rejected)
     refused += kv.second;
-  std::cerr << "asv_ais_csv_to_nmea: " << stats.rows << " rows, " << stats.kept << " reports read, " << refused
-            << " refused";
+  std::cerr << "asv_ais_csv_to_nmea: " << stats.rows << " rows, " << stats.kept << " reports read, "
+            << refused << " refused";
   for (const auto& kv : stats.rejected)
     std::cerr << ", " << kv.first << " " << kv.second;
   std::cerr << "; " << written << " messages written from " << static_sent.size() << " vessels\n";

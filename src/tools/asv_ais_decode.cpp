@@ -62,7 +62,7 @@ struct Stats {
   std::uint64_t sentences = 0;        // framed sentences, any type
   std::uint64_t other_sentences = 0;  // framed, but not VDM/VDO
   std::uint64_t printed = 0;
-  std::uint64_t garbage = 0;      // text outside any sentence
+  std::uint64_t garbage = 0;         // text outside any sentence
   std::uint64_t type24_held = 0;     // part A waiting for its part B
   std::uint64_t type24_dropped = 0;  // part B without its part A (not printed without -s)
   std::uint64_t reject[static_cast<int>(nmea::Reject::kCount)] = {};

@@ -63,18 +63,30 @@ bool parse(int argc, char** argv, Args& a) {
     char* end = nullptr;
     const double num = std::strtod(v.c_str(), &end);
     const bool is_num = end && *end == '\0' && !v.empty();
-    if (k == "--scenario") a.scenario = v;
-    else if (k == "--lat" && is_num) a.lat = num;
-    else if (k == "--lon" && is_num) a.lon = num;
-    else if (k == "--source") a.spec.source = v, a.source_given = true;
-    else if (k == "--resolution") a.spec.resolution = v, a.settings_given = true;
-    else if (k == "--layer") a.spec.layer = v, a.settings_given = true;
-    else if (k == "--radius" && is_num) a.spec.radius_m = num, a.settings_given = true;
-    else if (k == "--simplify" && is_num) a.spec.simplify_m = num, a.settings_given = true;
-    else if (k == "--cache") a.cache = v;
-    else if (k == "--geojson") a.geojson = v;
-    else if (k == "--local") a.local = v;
-    else return false;
+    if (k == "--scenario")
+      a.scenario = v;
+    else if (k == "--lat" && is_num)
+      a.lat = num;
+    else if (k == "--lon" && is_num)
+      a.lon = num;
+    else if (k == "--source")
+      a.spec.source = v, a.source_given = true;
+    else if (k == "--resolution")
+      a.spec.resolution = v, a.settings_given = true;
+    else if (k == "--layer")
+      a.spec.layer = v, a.settings_given = true;
+    else if (k == "--radius" && is_num)
+      a.spec.radius_m = num, a.settings_given = true;
+    else if (k == "--simplify" && is_num)
+      a.spec.simplify_m = num, a.settings_given = true;
+    else if (k == "--cache")
+      a.cache = v;
+    else if (k == "--geojson")
+      a.geojson = v;
+    else if (k == "--local")
+      a.local = v;
+    else
+      return false;
   }
   if (!a.scenario.empty() && a.settings_given) {
     std::cerr << "asv_chart: with --scenario the chart settings are the scenario's charts key; only "
@@ -124,8 +136,8 @@ int run(const Args& a) {
   }
   std::printf("land: %zu polygons, %zu vertices", land.size(), vertices);
   if (!land.empty())
-    std::printf(", extent x %.0f..%.0f m, y %.0f..%.0f m", extent.min().x(), extent.max().x(), extent.min().y(),
-                extent.max().y());
+    std::printf(", extent x %.0f..%.0f m, y %.0f..%.0f m", extent.min().x(), extent.max().x(),
+                extent.min().y(), extent.max().y());
   std::printf("\n");
   if (!a.geojson.empty()) {
     std::ofstream f(a.geojson);

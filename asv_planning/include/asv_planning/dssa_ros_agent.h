@@ -162,7 +162,7 @@ private:
   int last_rounds_ = 0, max_rounds_seen_ = 0, neighbours_ = 0;
   double last_search_time_ = 0.0, max_search_time_ = 0.0;
   double course_sp_ = 0.0, speed_sp_ = 0.0;
-  std::mutex cmd_mu_;                // the last set-point sent, for resendCommand()
+  std::mutex cmd_mu_;                                      // the last set-point sent, for resendCommand()
   std::optional<asv_msgs::CourseSpeedSetpoint> last_cmd_;  // under cmd_mu_
   ros::Timer resend_timer_;
   double own_course_ = 0.0;  // [rad] course over ground when the search phase began

@@ -111,8 +111,8 @@ private:
   double last_compute_ = 0.0, max_compute_ = 0.0;
   std::string last_reason_;
   std::unique_ptr<DssaRosAgent>
-      dssa_;  // distributed DSSA/DSSA+ (~distributed): drives cmd instead of the plugin
-  asv::ParamMap node_params_;           // ~ (a planner switch reads the new plugin's ~<planner>/)
+      dssa_;                   // distributed DSSA/DSSA+ (~distributed): drives cmd instead of the plugin
+  asv::ParamMap node_params_;  // ~ (a planner switch reads the new plugin's ~<planner>/)
   asv::ParamMap scenario_planners_;     // the scenario's planner_params, all planners
   std::string scenario_planner_;        // the scenario's planner for this ship ("" without scenario)
   std::string mode_ = "sea";            // the plugin's mode in force (its key mode)

@@ -23,9 +23,9 @@
 #include <asv_msgs/AisWeather.h>
 #include <asv_msgs/Target.h>
 #include <asv_msgs/TargetArray.h>
-#include <visualization_msgs/MarkerArray.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include "asv_risk/params.h"
 
@@ -37,7 +37,8 @@ asv_msgs::Target aisTargetMsg(const asv::AisTarget& s);
 // Conversions of the auxiliary messages (no node handle: unit-testable).
 asv_msgs::AidToNavigation aidMsg(const asv::AidRecord& a, const ros::Time& now);
 asv_msgs::AisSafetyMessage safetyMsg(const asv::ais::Message& m, const asv::ais::SafetyText& t);
-asv_msgs::AisWeather weatherMsg(std::uint32_t mmsi, const asv::ais::MetHydroReport& r, const asv::LocalFrame& frame);
+asv_msgs::AisWeather weatherMsg(std::uint32_t mmsi, const asv::ais::MetHydroReport& r,
+                                const asv::LocalFrame& frame);
 
 class AisAuxiliary {
 public:

@@ -20,9 +20,9 @@
 #include <string>
 
 #include <asv_core/codec/arpa.h>
-#include <asv_core/tracking/arpa_targets.h>
 #include <asv_core/common/clock_jump.h>
 #include <asv_core/common/geodesy.h>
+#include <asv_core/tracking/arpa_targets.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>

@@ -25,8 +25,8 @@
 #include <geometry_msgs/QuaternionStamped.h>
 #include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Odometry.h>
-#include <sensor_msgs/NavSatFix.h>
 #include <ros/ros.h>
+#include <sensor_msgs/NavSatFix.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "asv_risk/nmea_input.h"

@@ -35,7 +35,8 @@ struct IngestionNodeParams : CoreConfig {
 // from input/ (`input_defaults` the node's own), the origin resolved (origin_scenario: the origin of
 // that scenario file); an unknown key anywhere is std::invalid_argument naming it and `yaml`.
 template <typename CoreConfig>
-IngestionNodeParams<CoreConfig> loadIngestionParams(const ros::NodeHandle& pnh, const NmeaInputParams& input_defaults,
+IngestionNodeParams<CoreConfig> loadIngestionParams(const ros::NodeHandle& pnh,
+                                                    const NmeaInputParams& input_defaults,
                                                     const std::string& yaml) {
   const asv::ParamMap params = asv_ros::readParams(pnh);
   IngestionNodeParams<CoreConfig> p;
@@ -52,6 +53,5 @@ IngestionNodeParams<CoreConfig> loadIngestionParams(const ros::NodeHandle& pnh, 
   resolveOrigin(p);
   return p;
 }
-
 
 }  // namespace asv_risk

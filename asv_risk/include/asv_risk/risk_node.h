@@ -17,13 +17,13 @@
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/alarm.h>
+#include <asv_ros/frames.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <diagnostic_updater/publisher.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <tf2/LinearMath/Transform.h>
-#include <asv_ros/frames.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "asv_risk/conversions.h"

@@ -29,7 +29,8 @@ geometry_msgs::Pose transformPose(const tf2::Transform& t, const geometry_msgs::
 class FrameLookup {
 public:
   explicit FrameLookup(std::string working);
-  bool get(const std::string& frame, const ros::Time& stamp, tf2::Transform& out, bool latest_ok = false) const {
+  bool get(const std::string& frame, const ros::Time& stamp, tf2::Transform& out,
+           bool latest_ok = false) const {
     return lookupInto(buffer_, working_, frame, stamp, out, latest_ok);
   }
   const std::string& working() const { return working_; }

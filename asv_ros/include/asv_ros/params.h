@@ -34,7 +34,8 @@ void rejectTypoBehindError(const asv::ParamMap& params, const std::string& yaml,
 // validates its keys) from the private namespace `pnh`; then rejectUnknown(). The one way a node
 // loads its parameters.
 template <typename Config>
-Config loadConfig(const ros::NodeHandle& pnh, const std::string& yaml, const std::vector<std::string>& subtrees = {}) {
+Config loadConfig(const ros::NodeHandle& pnh, const std::string& yaml,
+                  const std::vector<std::string>& subtrees = {}) {
   const asv::ParamMap params = readParams(pnh);
   try {
     Config config = Config::fromParams(params);

@@ -20,11 +20,11 @@
 #include <asv_core/sim/run_summary.h>
 #include <asv_core/sim/sim_node_config.h>
 #include <asv_core/sim/simulation.h>
+#include <asv_msgs/CourseSpeedSetpoint.h>
+#include <asv_msgs/LockstepAck.h>
 #include <asv_ros/alarm.h>
 #include <asv_ros/map_origin.h>
 #include <asv_ros/nmea_output.h>
-#include <asv_msgs/CourseSpeedSetpoint.h>
-#include <asv_msgs/LockstepAck.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/Point.h>
 #include <ros/ros.h>

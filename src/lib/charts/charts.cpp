@@ -111,7 +111,8 @@ std::vector<GeomPtr> readFileLand(const ChartSpec& spec, const LonLatBox& box) {
   GDALDatasetUniquePtr ds(GDALDataset::Open(spec.source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
   if (!ds)
     throw ChartError(spec.source + ": cannot open as a vector chart (" +
-                     (CPLGetLastErrorMsg()[0] ? CPLGetLastErrorMsg() : "no such file or unknown format") + ")");
+                     (CPLGetLastErrorMsg()[0] ? CPLGetLastErrorMsg() : "no such file or unknown format") +
+                     ")");
   OGRSpatialReference wgs84;
   wgs84.SetWellKnownGeogCS("WGS84");
   wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
@@ -122,7 +123,8 @@ std::vector<GeomPtr> readFileLand(const ChartSpec& spec, const LonLatBox& box) {
     if (srs && !srs->IsSame(&wgs84)) {
       to_wgs84.reset(OGRCreateCoordinateTransformation(srs, &wgs84));
       if (!to_wgs84)
-        throw ChartError(spec.source + ": layer " + layer->GetName() + " has a CRS GDAL cannot convert to WGS84");
+        throw ChartError(spec.source + ": layer " + layer->GetName() +
+                         " has a CRS GDAL cannot convert to WGS84");
     } else {
       layer->SetSpatialFilterRect(box.west, box.south, box.east, box.north);
     }
@@ -133,7 +135,8 @@ std::vector<GeomPtr> readFileLand(const ChartSpec& spec, const LonLatBox& box) {
         continue;
       GeomPtr copy(g->clone());
       if (to_wgs84 && copy->transform(to_wgs84.get()) != OGRERR_NONE)
-        throw ChartError(spec.source + ": a feature of layer " + layer->GetName() + " cannot be converted to WGS84");
+        throw ChartError(spec.source + ": a feature of layer " + layer->GetName() +
+                         " cannot be converted to WGS84");
       collectPolygons(copy.get(), polys);
     }
   }
@@ -219,8 +222,8 @@ Polygon resolveHoles(const OGRPolygon& p, const Eigen::Vector2d& water) {
 }
 
 // One lon/lat land polygon to local simple polygons within the square.
-void addLocal(const OGRGeometry& ll, const ChartSpec& spec, const LocalFrame& frame, const OGRGeometry& box_ll,
-              const Eigen::Vector2d& water, std::vector<Polygon>& out) {
+void addLocal(const OGRGeometry& ll, const ChartSpec& spec, const LocalFrame& frame,
+              const OGRGeometry& box_ll, const Eigen::Vector2d& water, std::vector<Polygon>& out) {
   GeomPtr clipped(ll.Intersection(&box_ll));
   if (!clipped || clipped->IsEmpty())
     return;
@@ -301,9 +304,9 @@ void writeCache(const std::string& path, const std::string& key, const std::vect
 
 std::vector<Polygon> extract(const ChartSpec& spec, const LocalFrame& frame, const Eigen::Vector2d& water) {
   const LonLatBox box = charts_detail::geoBox(frame, spec.radius_m);
-  const std::vector<GeomPtr> land_ll = spec.source == "gshhg"
-                                           ? charts_detail::readGshhgLand(gshhgResolutionCode(spec.resolution), box)
-                                           : readFileLand(spec, box);
+  const std::vector<GeomPtr> land_ll =
+      spec.source == "gshhg" ? charts_detail::readGshhgLand(gshhgResolutionCode(spec.resolution), box)
+                             : readFileLand(spec, box);
   const GeomPtr box_ll = charts_detail::boxPolygon(box);
   std::vector<Polygon> land;
   for (const GeomPtr& g : land_ll)
@@ -339,7 +342,8 @@ std::string chartCachePath(const ChartSpec& spec, const LocalFrame& frame, const
   return spec.cache_dir + "/" + name;
 }
 
-std::vector<Polygon> loadChartLand(const ChartSpec& spec, const LocalFrame& frame, const Eigen::Vector2d& water) {
+std::vector<Polygon> loadChartLand(const ChartSpec& spec, const LocalFrame& frame,
+                                   const Eigen::Vector2d& water) {
   spec.validate();  // before the cache is looked at
   const std::string key = cacheKey(spec, frame, water);
   const std::string path = chartCachePath(spec, frame, water);

@@ -51,8 +51,9 @@ std::string run(const std::string& cmd) {
     out.append(buf.data(), n);
   const int status = pclose(pipe);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
-    throw ChartError("GSHHG charts need GMT and its GSHHG data (Debian packages gmt, gmt-gshhg-high; "
-                     "scripts/setup installs them): `gmt` was not found");
+    throw ChartError(
+        "GSHHG charts need GMT and its GSHHG data (Debian packages gmt, gmt-gshhg-high; "
+        "scripts/setup installs them): `gmt` was not found");
   if (status != 0)
     throw ChartError("GSHHG: `" + cmd + "` failed: " + out);
   return out;
@@ -65,7 +66,9 @@ std::string region(const LonLatBox& b) {
 }
 
 // Snaps to 1e-7 deg (1 cm) so that the ends of pieces cut at the same bin edge coincide exactly.
-double snap(double deg) { return std::round(deg * 1e7) / 1e7; }
+double snap(double deg) {
+  return std::round(deg * 1e7) / 1e7;
+}
 
 // The shoreline pieces of the region as line strings, plus the region's outline.
 GeomPtr shorelinePieces(const WorkDir& work, char code, const LonLatBox& box) {
@@ -95,8 +98,11 @@ GeomPtr shorelinePieces(const WorkDir& work, char code, const LonLatBox& box) {
   }
   flush();
   OGRLineString outline;
-  for (const auto& [lon, lat] : {std::pair{box.west, box.south}, {box.east, box.south}, {box.east, box.north},
-                                 {box.west, box.north}, {box.west, box.south}})
+  for (const auto& [lon, lat] : {std::pair{box.west, box.south},
+                                 {box.east, box.south},
+                                 {box.east, box.north},
+                                 {box.west, box.north},
+                                 {box.west, box.south}})
     outline.addPoint(lon, lat);
   lines->addGeometry(&outline);
   return GeomPtr(lines.release());
@@ -112,7 +118,8 @@ std::vector<bool> landFaces(const WorkDir& work, char code, const LonLatBox& box
     for (size_t i = 0; i < inside.size(); ++i)
       f << inside[i].getX() << ' ' << inside[i].getY() << ' ' << i << '\n';
   }
-  const std::string out = run(work.gmt() + "gmtselect " + region(box) + " -D" + code + " -Ns/k/s/k/s -Vq " + path);
+  const std::string out =
+      run(work.gmt() + "gmtselect " + region(box) + " -D" + code + " -Ns/k/s/k/s -Vq " + path);
   std::vector<bool> land(inside.size(), false);
   std::istringstream in(out);
   double lon = 0.0, lat = 0.0, idx = 0.0;

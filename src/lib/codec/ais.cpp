@@ -462,11 +462,11 @@ Status decodePayloadMessage(const Payload& p, Message& m) {
 struct LengthRule {
   std::uint16_t min, max;
 };
-constexpr LengthRule kLengths[28] = {
-    {0, 0},      {0, 0},      {0, 0},    {0, 0},      {0, 0},   {0, 0},      {88, 1008},  {72, 168},
-    {56, 1008},  {168, 1008}, {72, 1008}, {168, 1008}, {72, 1008}, {72, 168},  {40, 1008}, {88, 168},
-    {96, 168},   {80, 816},   {0, 0},    {0, 0},      {72, 186}, {0, 0},     {168, 1008}, {160, 1008},
-    {0, 0},      {40, 168},   {60, 1004}, {0, 0}};
+constexpr LengthRule kLengths[28] = {{0, 0},     {0, 0},    {0, 0},     {0, 0},      {0, 0},      {0, 0},
+                                     {88, 1008}, {72, 168}, {56, 1008}, {168, 1008}, {72, 1008},  {168, 1008},
+                                     {72, 1008}, {72, 168}, {40, 1008}, {88, 168},   {96, 168},   {80, 816},
+                                     {0, 0},     {0, 0},    {72, 186},  {0, 0},      {168, 1008}, {160, 1008},
+                                     {0, 0},     {40, 168}, {60, 1004}, {0, 0}};
 
 // Types 25 and 26 must also hold the destination and application id their flags announce.
 bool slotBinaryFits(const Payload& p, unsigned type) {

@@ -208,7 +208,8 @@ Error parseTll(const nmea::Sentence& s, TargetPosition& t, const ArpaConfig&) {
   if (Error e = targetNumber(s.field(1), t.number); e != Error::kNone)
     return e;
   double lat, lon;
-  if (nmea::parseLatLon(s.field(2), s.field(3), true, lat) && nmea::parseLatLon(s.field(4), s.field(5), false, lon)) {
+  if (nmea::parseLatLon(s.field(2), s.field(3), true, lat) &&
+      nmea::parseLatLon(s.field(4), s.field(5), false, lon)) {
     t.has_position = true;
     t.lat_deg = lat;
     t.lon_deg = lon;

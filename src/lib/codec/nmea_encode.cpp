@@ -205,7 +205,8 @@ BitWriter encodeStaticDataReport(std::uint32_t mmsi, const StaticDataReport& d) 
 }
 
 std::vector<std::string> toSentences(const BitWriter& payload, char channel, int seq_id,
-                                     const std::string& talker, std::size_t max_chars, const std::string& formatter) {
+                                     const std::string& talker, std::size_t max_chars,
+                                     const std::string& formatter) {
   int fill = 0;
   const std::string all = payload.armour(fill);
   const std::size_t n = std::max<std::size_t>(1, (all.size() + max_chars - 1) / max_chars);
@@ -248,10 +249,10 @@ std::string encodeRmc(const RmcOut& r, const std::string& talker) {
   gmtime_r(&midnight, &date);  // the civil date, from the C library
   char b[160];
   std::snprintf(b, sizeof b, "%sRMC,%02d%02d%05.2f,%c,%s,%s,%.1f,%.1f,%02d%02d%02d,,,%c", talker.c_str(),
-                static_cast<int>(sod / 3600.0), static_cast<int>(std::fmod(sod, 3600.0) / 60.0), std::fmod(sod, 60.0),
-                r.valid ? 'A' : 'V', angle(r.lat_deg, 2, 'N', 'S').c_str(), angle(r.lon_deg, 3, 'E', 'W').c_str(),
-                mpsToKnots(r.speed), tenthsOfDegree(r.course), date.tm_mday, date.tm_mon + 1, date.tm_year % 100,
-                r.valid ? 'A' : 'N');
+                static_cast<int>(sod / 3600.0), static_cast<int>(std::fmod(sod, 3600.0) / 60.0),
+                std::fmod(sod, 60.0), r.valid ? 'A' : 'V', angle(r.lat_deg, 2, 'N', 'S').c_str(),
+                angle(r.lon_deg, 3, 'E', 'W').c_str(), mpsToKnots(r.speed), tenthsOfDegree(r.course),
+                date.tm_mday, date.tm_mon + 1, date.tm_year % 100, r.valid ? 'A' : 'N');
   return nmea::withChecksum('$', b);
 }
 

@@ -186,7 +186,8 @@ std::vector<Polygon> offsetOutline(const Polygon& poly, double distance, int poi
   bg::model::multi_polygon<BPolygon> out;
   bg::buffer(in, out, bg::strategy::buffer::distance_symmetric<double>(distance),
              bg::strategy::buffer::side_straight(), bg::strategy::buffer::join_round(points_per_circle),
-             bg::strategy::buffer::end_round(points_per_circle), bg::strategy::buffer::point_circle(points_per_circle));
+             bg::strategy::buffer::end_round(points_per_circle),
+             bg::strategy::buffer::point_circle(points_per_circle));
   std::vector<Polygon> rings;
   for (const auto& p : out) {
     Polygon r;

@@ -23,7 +23,9 @@ struct ObstacleIndex::Tree {
 };
 
 namespace {
-BPoint bp(const Eigen::Vector2d& v) { return BPoint(v.x(), v.y()); }
+BPoint bp(const Eigen::Vector2d& v) {
+  return BPoint(v.x(), v.y());
+}
 }  // namespace
 
 ObstacleIndex::ObstacleIndex() : tree_(std::make_unique<Tree>()) {}
@@ -45,8 +47,12 @@ ObstacleIndex::ObstacleIndex(ObstacleIndex&&) noexcept = default;
 ObstacleIndex& ObstacleIndex::operator=(ObstacleIndex&&) noexcept = default;
 ObstacleIndex::~ObstacleIndex() = default;
 
-bool ObstacleIndex::empty() const { return tree_->edges.empty(); }
-size_t ObstacleIndex::edges() const { return tree_->edges.size(); }
+bool ObstacleIndex::empty() const {
+  return tree_->edges.empty();
+}
+size_t ObstacleIndex::edges() const {
+  return tree_->edges.size();
+}
 
 // The crossing rule of pointInPolygon, per polygon, over the edges that a ray from p meets. The ray
 // runs to the nearest side of the bounds, to meet as few edges as possible; pointInPolygon's horizontal
@@ -68,7 +74,7 @@ bool ObstacleIndex::inside(const Eigen::Vector2d& p) const {
     const Eigen::Vector2d a(bg::get<0, 0>(it->first), bg::get<0, 1>(it->first));
     const Eigen::Vector2d b(bg::get<1, 0>(it->first), bg::get<1, 1>(it->first));
     if (pointSegmentDistance(p, a, b) == 0.0)
-      return true;  // on the boundary: inside, as pointInPolygon
+      return true;           // on the boundary: inside, as pointInPolygon
     const int o = 1 - axis;  // the other axis
     if ((a[o] > p[o]) != (b[o] > p[o])) {
       const double cross = (b[axis] - a[axis]) * (p[o] - a[o]) / (b[o] - a[o]) + a[axis];

@@ -81,8 +81,8 @@ const std::string* ParamMap::find(const std::string& key, std::initializer_list<
   for (ParamType a : accepted)
     if (a == type)
       return &it->second;
-  fail("parameter '" + fullName(key) + "' has the wrong type: " + typeName(type) +
-                              " ('" + it->second + "') where " + expected + " belongs");
+  fail("parameter '" + fullName(key) + "' has the wrong type: " + typeName(type) + " ('" + it->second +
+       "') where " + expected + " belongs");
 }
 
 double ParamMap::getDouble(const std::string& key, double def) const {

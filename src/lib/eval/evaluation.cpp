@@ -477,8 +477,8 @@ void RunRecorder::addSample(double t, const std::vector<ShipSample>& ships) {
 void RunRecorder::checkLand(size_t i, const ShipSample& s) {
   if (info_.obstacles.empty())
     return;
-  const Polygon hull = hullOutline(s.state.position, s.state.heading, std::max(0.0, s.state.length),
-                                   std::max(0.0, s.beam));
+  const Polygon hull =
+      hullOutline(s.state.position, s.state.heading, std::max(0.0, s.state.length), std::max(0.0, s.beam));
   for (const StaticObstacle& o : info_.obstacles) {
     const double d = polygonObstacleDistance(hull, o, min_obstacle_[i]);  // exact where it can matter
     min_obstacle_[i] = std::min(min_obstacle_[i], d);
@@ -1108,8 +1108,8 @@ std::string RunRecorder::geoJson(const RunResult& r) const {
     closestApproach(frame, t, features);
   for (const Manoeuvre& m : r.own.manoeuvres) {
     const auto& own = tracks_[0].points;
-    const auto at = std::lower_bound(own.begin(), own.end(), m.time,
-                                     [](const Point& p, double t) { return p.t < t; });
+    const auto at =
+        std::lower_bound(own.begin(), own.end(), m.time, [](const Point& p, double t) { return p.t < t; });
     if (at == own.end())
       continue;
     Json p = kind("manoeuvre");

@@ -12,10 +12,10 @@ namespace asv {
 
 namespace {
 
-constexpr double kNodeMargin = 1.2;    // vertices are pushed out this many clearances
-constexpr double kMaxStretch = 5.0;    // a sharp corner's push is capped at this many clearances
-constexpr double kGapSpan = 6.0;       // gaps up to this many clearances wide get a node in the middle
-constexpr double kGapApproach = 2.0;   // the lining-up points lie this many clearances off a gap
+constexpr double kNodeMargin = 1.2;      // vertices are pushed out this many clearances
+constexpr double kMaxStretch = 5.0;      // a sharp corner's push is capped at this many clearances
+constexpr double kGapSpan = 6.0;         // gaps up to this many clearances wide get a node in the middle
+constexpr double kGapApproach = 2.0;     // the lining-up points lie this many clearances off a gap
 constexpr size_t kMaxGapVertices = 400;  // above this many vertices in all, no gap nodes (quadratic)
 
 // A polygon's vertices pushed out along the bisector of their edges' outward normals, so far that
@@ -53,7 +53,8 @@ void pushedVertices(const Polygon& poly, double offset, std::vector<Eigen::Vecto
 // point two clearances off it on either side, square to the gap: pushed corners alone miss a passage
 // narrower than two pushes, though its middle keeps the clearance, and a ship must line up with it
 // before she passes (from the side, her leg would cut the heads).
-void gapMiddles(const std::vector<StaticObstacle>& obstacles, double clearance, std::vector<Eigen::Vector2d>& out) {
+void gapMiddles(const std::vector<StaticObstacle>& obstacles, double clearance,
+                std::vector<Eigen::Vector2d>& out) {
   size_t total = 0;
   for (const auto& o : obstacles)
     total += o.polygon.size();
@@ -73,8 +74,9 @@ void gapMiddles(const std::vector<StaticObstacle>& obstacles, double clearance, 
 }
 
 // `boxes`: the obstacles' bounding boxes (or none), to skip those farther than `required` cheaply.
-bool clearLeg(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::vector<StaticObstacle>& obstacles,
-              double required, const std::vector<Eigen::AlignedBox2d>& boxes = {}) {
+bool clearLeg(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+              const std::vector<StaticObstacle>& obstacles, double required,
+              const std::vector<Eigen::AlignedBox2d>& boxes = {}) {
   const Eigen::AlignedBox2d leg(a.cwiseMin(b), a.cwiseMax(b));
   for (size_t k = 0; k < obstacles.size(); ++k) {
     if (k < boxes.size() && leg.exteriorDistance(boxes[k]) >= required)
@@ -113,7 +115,8 @@ std::vector<Eigen::Vector2d> landTrack(const Plan& plan, const Eigen::Vector2d& 
   return truncateTrack(track, reach);
 }
 
-double trackObstacleDistance(const std::vector<Eigen::Vector2d>& track, const std::vector<StaticObstacle>& obstacles) {
+double trackObstacleDistance(const std::vector<Eigen::Vector2d>& track,
+                             const std::vector<StaticObstacle>& obstacles) {
   double best = std::numeric_limits<double>::infinity();
   for (const StaticObstacle& o : obstacles)
     for (size_t i = 0; i < track.size() && best > 0.0; ++i)

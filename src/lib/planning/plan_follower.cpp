@@ -21,10 +21,12 @@ void PlanFollowerConfig::validate() const {
       throw std::invalid_argument(std::string("plan follower: ") + what + " (see planner_node.yaml)");
   };
   require(cruise_speed >= 0.0, "cruise_speed must be >= 0 m/s");
-  require(replan_period > 0 && min_replan_interval >= 0, "replan_period must be > 0, min_replan_interval >= 0 s");
+  require(replan_period > 0 && min_replan_interval >= 0,
+          "replan_period must be > 0, min_replan_interval >= 0 s");
   require(time_budget > 0, "time_budget must be > 0 s");
   require(waypoint_acceptance > 0, "waypoint_acceptance must be > 0 m");
-  require(fallback_speed_factor >= 0 && fallback_speed_factor <= 1, "fallback_speed_factor must be in [0, 1]");
+  require(fallback_speed_factor >= 0 && fallback_speed_factor <= 1,
+          "fallback_speed_factor must be in [0, 1]");
   require(extremis_range >= 0 && plan_clearance >= 0, "extremis_range and plan_clearance must be >= 0 m");
   require(prediction_horizon > 0, "prediction_horizon must be > 0 s");
   require(min_separation >= 0 && risk_clear_time >= 0, "min_separation and risk_clear_time must be >= 0");
@@ -65,7 +67,8 @@ bool riskBlindPlanning(bool risk_fresh, double now, double first_input, double s
   return !risk_fresh && first_input >= 0.0 && now - first_input >= stale_after;
 }
 
-std::vector<PlannerTarget> selectPlannerTargets(const std::string& own_id, const std::vector<ShipState>& tracks,
+std::vector<PlannerTarget> selectPlannerTargets(const std::string& own_id,
+                                                const std::vector<ShipState>& tracks,
                                                 const std::map<std::string, PlannerTarget>& assessed,
                                                 bool risk_alive) {
   std::vector<PlannerTarget> out;
@@ -162,8 +165,8 @@ bool onlyKeepsOutOfTheWay(const PlanningProblem& pr) {
 struct RuleCheck {
   const PlanningProblem& problem;
   double land_required = 0.0;
-  bool give_way = false;   // she gives way in a head-on or crossing encounter (Rules 14, 15)
-  bool port_side = false;  // a ship crossing from her port side, which she stood on for (Rule 17(c))
+  bool give_way = false;     // she gives way in a head-on or crossing encounter (Rules 14, 15)
+  bool port_side = false;    // a ship crossing from her port side, which she stood on for (Rule 17(c))
   bool keeps_clear = false;  // she keeps out of the way of some target (Rules 13-15)
 
   std::string broken(const Plan& p) const {
@@ -365,9 +368,11 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   pr.obstacles = obstacles_;
   // Round land: the planners steer for the route's next point (none when the straight way is clear).
   // Land beyond the reach (speed x horizon) of the straight way is left to a later plan.
-  const double required = landRequirement(pr.own.position, pr.goal, obstacles_, cfg_.min_obstacle_clearance_m);
+  const double required =
+      landRequirement(pr.own.position, pr.goal, obstacles_, cfg_.min_obstacle_clearance_m);
   const double reach = std::max(pr.own.speed, 0.5) * cfg_.prediction_horizon;
-  if (required > 0.0 && trackObstacleDistance(truncateTrack({pr.own.position, pr.goal}, reach), obstacles_) < required)
+  if (required > 0.0 &&
+      trackObstacleDistance(truncateTrack({pr.own.position, pr.goal}, reach), obstacles_) < required)
     if (auto route = landRoute(pr.own.position, pr.goal, obstacles_, cfg_.min_obstacle_clearance_m, required))
       pr.route = std::move(*route);
   pr.seed = static_cast<uint64_t>(cfg_.seed) + replans_;
@@ -410,10 +415,11 @@ Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std
     }
   // Holding course (or turning hard) onto land is no fallback: the ship stops instead (a grounding is
   // as bad as a collision; Rule 8(e): taking all way off is an action to avoid a collision too).
-  const double required = landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
+  const double required =
+      landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
   if (required > 0.0 &&
-      trackObstacleDistance(landTrack(f, own_->position, f.speed_setpoint * cfg_.prediction_horizon), obstacles_) <
-          required) {
+      trackObstacleDistance(landTrack(f, own_->position, f.speed_setpoint * cfg_.prediction_horizon),
+                            obstacles_) < required) {
     f.speed_setpoint = 0.0;
     f.message = "fallback (" + why + "): land ahead on the present course, stop";
   }
@@ -447,7 +453,8 @@ double PlanFollower::predictedClearance(const std::vector<PlannerTarget>& target
 }
 
 bool PlanFollower::landAhead() const {
-  const double required = landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
+  const double required =
+      landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
   if (!(required > 0.0))
     return false;
   const double reach = std::max(speed_sp_, cfg_.cruise_speed) * cfg_.prediction_horizon;
@@ -511,8 +518,8 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
     }
   }
   if (plan_.status == PlanStatus::Ok && landAhead()) {
-    why = "plan predicted to pass within " +
-          std::to_string(static_cast<int>(cfg_.min_obstacle_clearance_m)) + " m of land";
+    why = "plan predicted to pass within " + std::to_string(static_cast<int>(cfg_.min_obstacle_clearance_m)) +
+          " m of land";
     return true;
   }
   // A plan is kept while it stays safe; periodic replanning of a safe plan would only make the ship weave.
@@ -548,15 +555,16 @@ const Plan& PlanFollower::degrade(double now, const std::vector<PlannerTarget>& 
     degraded_since_ = now;
   if (!own_)
     return plan_;
-  const bool keep = have_plan_ && plan_.status == PlanStatus::Ok && now - degraded_since_ <= cfg_.degraded_plan_hold &&
-                    predictedClearance(last_known) >= std::max(cfg_.plan_clearance, cfg_.min_separation) &&
-                    !landAhead();
+  const bool keep =
+      have_plan_ && plan_.status == PlanStatus::Ok && now - degraded_since_ <= cfg_.degraded_plan_hold &&
+      predictedClearance(last_known) >= std::max(cfg_.plan_clearance, cfg_.min_separation) && !landAhead();
   if (keep)
     return plan_;
   // The course held is the one she had when the plan was given up, not wherever she drifts since.
   // Every last known ship inside extremis_range counts as urgent (her risk cannot be assessed), so the
   // fallback's hard turn and its stop short of land are checked again at every call.
-  const bool holding = have_plan_ && plan_.status == PlanStatus::Fallback && plan_.message.rfind("degraded", 0) == 0;
+  const bool holding =
+      have_plan_ && plan_.status == PlanStatus::Fallback && plan_.message.rfind("degraded", 0) == 0;
   if (!holding)
     degraded_course_ = own_->course;
   std::vector<PlannerTarget> marked = last_known;

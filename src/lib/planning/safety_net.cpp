@@ -76,8 +76,9 @@ PredictedRoute planRoute(const Plan& plan, const PlanningProblem& pr) {
   return r;
 }
 
-std::vector<Eigen::Vector2d> flownTrack(const PredictedRoute& route, double heading, const OwnShipLimits& limits,
-                                        double reach, double acceptance, double dt) {
+std::vector<Eigen::Vector2d> flownTrack(const PredictedRoute& route, double heading,
+                                        const OwnShipLimits& limits, double reach, double acceptance,
+                                        double dt) {
   std::vector<Eigen::Vector2d> track;
   if (route.points.empty())
     return track;
@@ -111,7 +112,8 @@ bool routeKeepsOffLand(const PredictedRoute& route, const PlanningProblem& pr, d
   // As flown the track cuts corners (waypoint acceptance) and swings out of sharp turns: half the
   // clearance is kept there, the whole on the planned legs.
   return trackObstacleDistance(truncateTrack(route.points, reach), pr.obstacles) >= required &&
-         trackObstacleDistance(flownTrack(route, pr.own.heading, pr.limits, reach), pr.obstacles) >= 0.5 * required;
+         trackObstacleDistance(flownTrack(route, pr.own.heading, pr.limits, reach), pr.obstacles) >=
+             0.5 * required;
 }
 
 namespace {

@@ -458,8 +458,9 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
       continue;
     }
     const bool still = stationary(v, s, o);
-    if (still && std::any_of(o.land.begin(), o.land.end(),
-                             [&](const StaticObstacle& l) { return pointInPolygon(l.polygon, s.position); })) {
+    if (still && std::any_of(o.land.begin(), o.land.end(), [&](const StaticObstacle& l) {
+          return pointInPolygon(l.polygon, s.position);
+        })) {
       ++res.skipped["stopped on chart land (a berth the chart draws as land)"];
       continue;
     }

@@ -127,7 +127,9 @@ TargetDraw drawTarget(Draw& d, const GeneratorConfig& cfg, Kind kind, double tcp
   t.length = std::round(d.uniform(30.0, 300.0));
   if (targetGivesWay(kind)) {
     const bool breaks = d.chance(breaker_share);
-    t.behaviour = !breaks ? Behaviour::GiveWay : d.chance(0.5) ? Behaviour::NonCompliant : Behaviour::PortTurn;
+    t.behaviour = !breaks         ? Behaviour::GiveWay
+                  : d.chance(0.5) ? Behaviour::NonCompliant
+                                  : Behaviour::PortTurn;
   }
   return t;
 }
@@ -165,9 +167,8 @@ std::vector<TargetDraw> drawTargets(Draw& d, const GeneratorConfig& cfg, Situati
   const double centre = d.uniform(cfg.tcpa_min_s + 0.5 * cfg.converging_window_s, cfg.tcpa_max_s);
   std::vector<TargetDraw> out;
   for (int i = 0; i < n; ++i) {
-    const double t = c == SituationClass::Converging
-                         ? centre + d.uniform(-0.5, 0.5) * cfg.converging_window_s
-                         : tcpa();
+    const double t =
+        c == SituationClass::Converging ? centre + d.uniform(-0.5, 0.5) * cfg.converging_window_s : tcpa();
     out.push_back(drawTarget(d, cfg, anyKind(d, channel), t, several ? cfg.rule_breaker_share : 0.0));
   }
   return out;
@@ -301,8 +302,8 @@ Draft drawScenario(Draw& d, const GeneratorConfig& cfg, SituationClass c, uint64
     const double nm = kMetresPerNauticalMile;
     const double side = d.sign(), offset = d.uniform(1.0, channel ? 2.0 : 2.5) * nm;
     s.obstacles.push_back(coast(d, s.own, route, side, offset, channel ? "bank 1" : "coast"));
-    land = std::string(channel ? " A channel: banks " : " A coast ") +
-           strFormat("%.1f nm to ", offset / nm) + (side > 0 ? "starboard" : "port");
+    land = std::string(channel ? " A channel: banks " : " A coast ") + strFormat("%.1f nm to ", offset / nm) +
+           (side > 0 ? "starboard" : "port");
     if (channel) {
       const double other = d.uniform(1.0, 2.0) * nm;
       s.obstacles.push_back(coast(d, s.own, route, -side, other, "bank 2"));
@@ -329,7 +330,8 @@ ShipState stateOf(const ScenarioShip& s) {
 }
 
 // Start ranges and encounters; "" when the draw is as intended, else the reason it is refused.
-std::string checkGeometry(const GeneratorConfig& cfg, const Scenario& s, const std::vector<TargetDraw>& draws) {
+std::string checkGeometry(const GeneratorConfig& cfg, const Scenario& s,
+                          const std::vector<TargetDraw>& draws) {
   const double min_start = cfg.start_range_min_factor * cfg.min_separation_m;
   const ShipState own = stateOf(s.own);
   for (size_t i = 0; i < s.targets.size(); ++i) {
@@ -342,7 +344,8 @@ std::string checkGeometry(const GeneratorConfig& cfg, const Scenario& s, const s
     for (size_t j = 0; j < i; ++j)
       if ((s.targets[j].position - t.position).norm() < min_start)
         return "two targets start too close";
-    if (classifyEncounter(own, t, computeCpa(own, t), ColregsConfig{}).encounter != expectedEncounter(draws[i].kind))
+    if (classifyEncounter(own, t, computeCpa(own, t), ColregsConfig{}).encounter !=
+        expectedEncounter(draws[i].kind))
       return "encounter classified otherwise";
   }
   for (const auto& o : s.obstacles)
@@ -438,16 +441,16 @@ GeneratedScenario generateScenario(const GeneratorConfig& cfg, SituationClass si
       reason = checkGeometry(cfg, g.scenario, draft.draws);
     if (reason.empty())
       reason = checkTraffic(cfg, g.scenario);
-    if (reason.empty() && !manoeuvreExists(g.scenario, draft.act_time, cfg.min_separation_m,
-                                           g.scenario.obstacles.empty() ? 0.0 : cfg.obstacle_clearance_m,
-                                           cfg.check_dt))
+    if (reason.empty() &&
+        !manoeuvreExists(g.scenario, draft.act_time, cfg.min_separation_m,
+                         g.scenario.obstacles.empty() ? 0.0 : cfg.obstacle_clearance_m, cfg.check_dt))
       reason = "no manoeuvre keeps the minimum separation";
     if (reason.empty())
       return g;
     ++g.refused[reason];
   }
-  throw std::runtime_error(std::string("asv_scenario_gen: no acceptable draw for class ") + toString(situation) +
-                           " after " + std::to_string(cfg.max_redraws) + " redraws");
+  throw std::runtime_error(std::string("asv_scenario_gen: no acceptable draw for class ") +
+                           toString(situation) + " after " + std::to_string(cfg.max_redraws) + " redraws");
 }
 
 const std::vector<SituationClass>& allSituationClasses() {

@@ -20,8 +20,9 @@ void loadCharts(Scenario& s, const ChartOptions& options) {
   if (!s.charts)
     return;
   ChartSpec spec = *s.charts;
-  spec.cache_dir = options.cache_dir == "none" ? "" : options.cache_dir.empty() ? defaultChartCacheDir()
-                                                                                 : options.cache_dir;
+  spec.cache_dir = options.cache_dir == "none" ? ""
+                   : options.cache_dir.empty() ? defaultChartCacheDir()
+                                               : options.cache_dir;
   std::vector<Polygon> land;
   try {
     land = loadChartLand(spec, s.frame(), s.own.position);

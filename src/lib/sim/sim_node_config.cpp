@@ -19,7 +19,8 @@ void readSim(const ParamMap& p, SimConfig& s) {
       degToRad(p.getDouble("wave_direction_deg", radToDeg(s.environment.wave_direction)));
   s.environment.wave_height = p.getDouble("wave_height", s.environment.wave_height);
   s.environment.wave_length = p.getDouble("wave_length", s.environment.wave_length);
-  s.traffic.give_way_alteration_deg = p.getDouble("give_way_alteration_deg", s.traffic.give_way_alteration_deg);
+  s.traffic.give_way_alteration_deg =
+      p.getDouble("give_way_alteration_deg", s.traffic.give_way_alteration_deg);
   s.traffic.give_way_tcpa = p.getDouble("give_way_tcpa", s.traffic.give_way_tcpa);
   s.traffic.give_way_dcpa = p.getDouble("give_way_dcpa", s.traffic.give_way_dcpa);
   s.traffic.waypoint_acceptance = p.getDouble("waypoint_acceptance", s.traffic.waypoint_acceptance);

@@ -563,7 +563,8 @@ Mmg3DofParams loadVesselPreset(const std::string& name_or_path, const std::strin
         dir = envdir;
       } else {
 #ifdef ASV_CORE_PRESET_DIR
-        dir = std::filesystem::is_directory(ASV_CORE_PRESET_DIR) ? ASV_CORE_PRESET_DIR : ASV_CORE_INSTALLED_PRESET_DIR;
+        dir = std::filesystem::is_directory(ASV_CORE_PRESET_DIR) ? ASV_CORE_PRESET_DIR
+                                                                 : ASV_CORE_INSTALLED_PRESET_DIR;
 #else
         throw std::runtime_error("loadVesselPreset: '" + name_or_path +
                                  "' is a preset name but no preset directory was given and "

@@ -20,7 +20,8 @@ void ArpaTargetConfig::validate() const {
   if (!(odom_timeout > 0.0))
     throw std::invalid_argument("odom_timeout must be > 0 s");
   if (!(sigmas.range > 0.0 && sigmas.range_fraction >= 0.0 && sigmas.bearing_deg > 0.0 && tll_sigma > 0.0))
-    throw std::invalid_argument("range_sigma, bearing_sigma_deg, tll_sigma must be > 0, range_sigma_fraction >= 0");
+    throw std::invalid_argument(
+        "range_sigma, bearing_sigma_deg, tll_sigma must be > 0, range_sigma_fraction >= 0");
 }
 
 ArpaQuality ArpaTarget::quality() const {
@@ -29,7 +30,8 @@ ArpaQuality ArpaTarget::quality() const {
   return acquiring ? ArpaQuality::Acquiring : ArpaQuality::Tracking;
 }
 
-ArpaTargetTable::ArpaTargetTable(const ArpaTargetConfig& cfg, const LocalFrame& frame) : cfg_(cfg), frame_(frame) {
+ArpaTargetTable::ArpaTargetTable(const ArpaTargetConfig& cfg, const LocalFrame& frame)
+    : cfg_(cfg), frame_(frame) {
   cfg_.validate();
 }
 
@@ -96,7 +98,7 @@ ArpaOutcome ArpaTargetTable::ttm(const arpa::TrackedTarget& reported, std::int64
   if (n != ArpaOutcome::Target)
     return n;
   // A relative bearing or course needs the own heading: the navigation sensors', else the radar's OSD.
-  const double heading = has_own_ && fresh(own_stamp_ns_, stamp_ns)                ? own_heading_
+  const double heading = has_own_ && fresh(own_stamp_ns_, stamp_ns)           ? own_heading_
                          : has_osd_heading_ && fresh(osd_stamp_ns_, stamp_ns) ? osd_heading_
                                                                               : arpa::kNaN;
   arpa::TrackedTarget tt = reported;

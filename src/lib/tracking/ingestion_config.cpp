@@ -33,7 +33,8 @@ void IngestionConfig::validateShared() const {
     throw std::invalid_argument("silence_warning must be > 0 s");
   // Three heartbeats within the tracker's watch/input_timeout (1.5 s): at most 0.5 s.
   if (!(heartbeat_period > 0.0 && heartbeat_period <= 0.5))
-    throw std::invalid_argument("heartbeat_period must be in (0, 0.5] s (the tracker's watch/input_timeout is 1.5 s)");
+    throw std::invalid_argument(
+        "heartbeat_period must be in (0, 0.5] s (the tracker's watch/input_timeout is 1.5 s)");
 }
 
 void readTableLimits(const ParamMap& p, double& max_range, std::size_t& max_targets, double& forget_after) {

@@ -87,8 +87,8 @@ double OwnShipEstimator::sigmaOf(const gnss::Fix& fix) const {
   return fix.hdop.value_or(kDefaultHdop) * rangeError(fix.quality);
 }
 
-OwnShipEstimator::Use OwnShipEstimator::position(const gnss::Fix& fix, const char* source, double t, double wall,
-                                                 std::string& why) {
+OwnShipEstimator::Use OwnShipEstimator::position(const gnss::Fix& fix, const char* source, double t,
+                                                 double wall, std::string& why) {
   if (!validLatLon(fix.lat_deg, fix.lon_deg) || fix.quality == gnss::Quality::kNone ||
       (fix.sigma && !(*fix.sigma >= 0.0 && std::isfinite(*fix.sigma)))) {
     why = std::string(source) + ": no fix";

@@ -22,7 +22,8 @@ void TrackerNodeConfig::validate() const {
   if (!(future_tolerance >= 0.0))
     throw std::invalid_argument("future_tolerance must be >= 0 s");
   if (!(default_position_sigma > 0.0 && ais_velocity_sigma > 0.0 && arpa_velocity_sigma > 0.0))
-    throw std::invalid_argument("default_position_sigma, ais_velocity_sigma and arpa_velocity_sigma must be > 0");
+    throw std::invalid_argument(
+        "default_position_sigma, ais_velocity_sigma and arpa_velocity_sigma must be > 0");
 }
 
 TrackerNodeConfig TrackerNodeConfig::fromParams(const ParamMap& p) {

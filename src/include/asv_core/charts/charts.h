@@ -61,7 +61,8 @@ inline char gshhgResolutionCode(const std::string& resolution) {
   for (const char* n : names)
     if (resolution == n)
       return n[0];
-  throw ChartError("charts: resolution '" + resolution + "' is not one of crude, low, intermediate, high, full");
+  throw ChartError("charts: resolution '" + resolution +
+                   "' is not one of crude, low, intermediate, high, full");
 }
 
 // The land round `frame`'s origin, as simple polygons (no holes) in its ENU frame [m].

@@ -334,9 +334,9 @@ struct MetHydroReport {
 // longer than gpsd's 1008.
 bool decodeMetHydro31(const Payload& p, MetHydroReport& out);
 
-using Body = std::variant<PositionReportA, BaseStationReport, StaticVoyageData, PositionReportB,
-                          AidToNavigation, StaticDataReport, LongRangeReport, SarAircraftReport, SafetyText,
-                          PayloadMessage>;
+using Body =
+    std::variant<PositionReportA, BaseStationReport, StaticVoyageData, PositionReportB, AidToNavigation,
+                 StaticDataReport, LongRangeReport, SarAircraftReport, SafetyText, PayloadMessage>;
 
 struct Message {
   std::uint8_t type = 0;

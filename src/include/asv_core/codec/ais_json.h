@@ -88,7 +88,8 @@ public:
   // `count` bits from `start`, bits at or after `limit` (when not 0) printed as 0.
   void dataBits(const char* name, const Payload& p, std::size_t start, std::size_t count, std::size_t limit);
   // "MM-DDTHH:MMZ", or "DDTHH:MMZ" without `with_month` (month then ignored).
-  void stamp(const char* name, unsigned month, unsigned day, unsigned hour, unsigned minute, bool with_month = true);
+  void stamp(const char* name, unsigned month, unsigned day, unsigned hour, unsigned minute,
+             bool with_month = true);
   // The digits of a stamp alone: "MM-DDTHH:MM" or "DDTHH:MM" (zero-padded, no quotes, no zone letter).
   void stampBody(unsigned month, unsigned day, unsigned hour, unsigned minute, bool with_month = true);
 

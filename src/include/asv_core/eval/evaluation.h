@@ -102,7 +102,7 @@ struct RunInfo {
     std::optional<Eigen::Vector2d> goal;  // [m] ENU
     std::string planner;                  // "" for traffic without a planner
   };
-  std::vector<Ship> ships;  // ships[0] is the own ship; every sample lists ships by these names
+  std::vector<Ship> ships;                // ships[0] is the own ship; every sample lists ships by these names
   std::vector<StaticObstacle> obstacles;  // static obstacles (land), ENU [m]
   GeoPoint origin;                        // of the ENU frame (the scenario's; 0 N 0 E without one)
 
@@ -167,8 +167,8 @@ struct RunResult {
   uint64_t seed = 0;
   GeoPoint origin;  // of the positions' ENU frame: the JSON gives them as latitude/longitude
   ShipResult own;
-  bool collision = false;                // the own ship touched another ship
-  int collisions_between_targets = 0;    // pairs of other ships that touched each other
+  bool collision = false;              // the own ship touched another ship
+  int collisions_between_targets = 0;  // pairs of other ships that touched each other
   bool safety_violation = false;
   struct PlanTime {
     double median_ms = std::numeric_limits<double>::quiet_NaN();

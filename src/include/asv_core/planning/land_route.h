@@ -20,7 +20,8 @@ std::vector<Eigen::Vector2d> truncateTrack(const std::vector<Eigen::Vector2d>& t
 // fallback, or a plan that stops), its course.
 std::vector<Eigen::Vector2d> landTrack(const Plan& plan, const Eigen::Vector2d& from, double reach);
 // Smallest distance from a polyline to the area of any obstacle; infinity without obstacles.
-double trackObstacleDistance(const std::vector<Eigen::Vector2d>& track, const std::vector<StaticObstacle>& obstacles);
+double trackObstacleDistance(const std::vector<Eigen::Vector2d>& track,
+                             const std::vector<StaticObstacle>& obstacles);
 // How close to land a plan from `position` to `goal` may come: the clearance, or half the present
 // distance when the ship is already inside it (a narrow channel), or half the goal's when the goal is
 // (a berth), so that she may still move and arrive. 0: no land.

@@ -51,9 +51,9 @@ struct PlanFollowerConfig {
   // replans, so a trajectory computed once with every target in view is sailed as computed (the
   // experiments of Lazarowska 2015 and Wu et al. 2022 plan once per encounter).
   bool replan_on_risk = true;
-  double risk_clear_time = 60.0;       // [s] a target's risk must stay none, with its CPA past, this
-                                       // long before a new rise replans again (tracking noise flickers
-                                       // round thresholds; a plan that works lowers the risk)
+  double risk_clear_time = 60.0;  // [s] a target's risk must stay none, with its CPA past, this
+                                  // long before a new rise replans again (tracking noise flickers
+                                  // round thresholds; a plan that works lowers the risk)
   OwnShipLimits limits;
 
   void validate() const;  // throws std::invalid_argument
@@ -110,7 +110,8 @@ bool riskBlindPlanning(bool risk_fresh, double now, double first_input, double s
 // track no assessment covers (a new track, the start of a run) is left out while the risk picture is
 // alive (`risk_alive`); once it has gone silent (riskBlindPlanning) every track is kept, risk-blind:
 // no encounter, no role.
-std::vector<PlannerTarget> selectPlannerTargets(const std::string& own_id, const std::vector<ShipState>& tracks,
+std::vector<PlannerTarget> selectPlannerTargets(const std::string& own_id,
+                                                const std::vector<ShipState>& tracks,
                                                 const std::map<std::string, PlannerTarget>& assessed,
                                                 bool risk_alive);
 

@@ -16,8 +16,8 @@ namespace asv {
 
 struct PlannerNodeConfig {
   std::string planner = "aco";  // plugin short name; "" = the scenario's choice; "none" = no planning
-  std::string mode;             // the plugin's mode (planning.h): "" = its own (planner_params, ~<planner>/mode)
-  std::string ship = "own";     // ship this node plans for (frames, plan.ship)
+  std::string mode;          // the plugin's mode (planning.h): "" = its own (planner_params, ~<planner>/mode)
+  std::string ship = "own";  // ship this node plans for (frames, plan.ship)
   std::string frame_id = "map";
   std::string scenario;  // optional scenario file: goal, static obstacles, planner_params
   ChartOptions charts;   // charts, chart_cache_dir: the land of the scenario's charts (charts.h)

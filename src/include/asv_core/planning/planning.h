@@ -68,8 +68,8 @@ double polygonObstacleDistance(const Polygon& outline, const StaticObstacle& o,
 
 // The own ship's manoeuvring limits the planners respect.
 struct OwnShipLimits {
-  double max_speed = 10.0;   // [m/s]
-  double min_speed = 0.0;    // [m/s]
+  double max_speed = 10.0;  // [m/s]
+  double min_speed = 0.0;   // [m/s]
   // [rad/s] omega of Lazarowska (2015) eq. (6), the steady rate of turn. The paper measures it in
   // turning trials and gives no value: 1 deg/s is our choice, a moderate rate for a small vessel.
   double turn_rate = 0.0175;

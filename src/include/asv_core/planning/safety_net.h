@@ -37,8 +37,9 @@ PredictedRoute planRoute(const Plan& plan, const PlanningProblem& problem);
 // she turns at most turn_rate towards the next point, which she passes within `acceptance`, every
 // `dt` seconds, for `reach` metres or until the last point. A sharp turn at a waypoint swings her out
 // by about her turning radius (speed / turn rate), which the straight legs leave out.
-std::vector<Eigen::Vector2d> flownTrack(const PredictedRoute& route, double heading, const OwnShipLimits& limits,
-                                        double reach, double acceptance = 150.0, double dt = 2.0);
+std::vector<Eigen::Vector2d> flownTrack(const PredictedRoute& route, double heading,
+                                        const OwnShipLimits& limits, double reach, double acceptance = 150.0,
+                                        double dt = 2.0);
 
 // Whether the route keeps `required` off the problem's obstacles as planned, and half of it as flown
 // (flownTrack from the own heading: corners cut, sharp turns swung out), over the reach of the

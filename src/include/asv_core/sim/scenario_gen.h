@@ -51,9 +51,9 @@ struct GeneratorConfig {
   double dcpa_max_m = 0.3 * 1852.0;                     // distance at the CPA (0-0.3 nm)
   int max_targets = 5;                                  // Multi, Converging: 2..max_targets
   double converging_window_s = 180.0;                   // Converging: every CPA within this window
-  double rule_breaker_share = 0.2;     // Multi, Converging: share of give-way targets that break the rules
-  double three_dof_share = 0.25;       // share of own ships on the 3-DOF wu_asv_40m preset (12 kn)
-  double min_separation_m = 926.0;     // the scenario's safety.min_separation_m (0.5 nm)
+  double rule_breaker_share = 0.2;      // Multi, Converging: share of give-way targets that break the rules
+  double three_dof_share = 0.25;        // share of own ships on the 3-DOF wu_asv_40m preset (12 kn)
+  double min_separation_m = 926.0;      // the scenario's safety.min_separation_m (0.5 nm)
   double obstacle_clearance_m = 185.2;  // Coastal: safety.min_obstacle_clearance_m (0.1 nm)
   double start_range_min_factor = 2.0;  // ships start at least this x min_separation apart
   double start_range_max_m = 11.0 * 1852.0;  // and inside the classifier's 12 nm horizon
@@ -64,8 +64,8 @@ struct GeneratorConfig {
 
 struct GeneratedScenario {
   SituationClass situation = SituationClass::HeadOn;
-  std::string yaml;   // the file
-  Scenario scenario;  // the file parsed back: what the checks ran on
+  std::string yaml;                    // the file
+  Scenario scenario;                   // the file parsed back: what the checks ran on
   std::map<std::string, int> refused;  // draws refused before this one, by reason
 };
 

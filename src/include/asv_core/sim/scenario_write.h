@@ -1,8 +1,8 @@
 // Writes a scenario as a format-1 YAML file (asv_bringup/scenarios/README.md), the inverse of
 // parseScenario for what generated scenarios use: header, origin, safety, charts, ships with local
-// positions, goals, waypoints and recorded tracks, static obstacles. Numbers are rounded for reading (positions 0.1 m, courses 0.1 deg,
-// speeds 0.01 kn, lengths 0.1 m, latitude/longitude 1e-7 deg), so a program that needs the file's
-// exact values parses the text it wrote.
+// positions, goals, waypoints and recorded tracks, static obstacles. Numbers are rounded for reading
+// (positions 0.1 m, courses 0.1 deg, speeds 0.01 kn, lengths 0.1 m, latitude/longitude 1e-7 deg), so a
+// program that needs the file's exact values parses the text it wrote.
 #pragma once
 
 #include <string>

@@ -116,14 +116,14 @@ void AisTargetTable::due(std::int64_t now_ns, F f) {
 // only), that a ship keeps clear of.
 struct AidRecord {
   std::uint32_t mmsi = 0;
-  std::string name;  // trimmed
+  std::string name;           // trimmed
   std::uint8_t aid_type = 0;  // ITU-R M.1371 table (ais::aidTypeText)
   bool virtual_aid = false;
   bool off_position = false;  // a floating aid reporting itself off its charted position
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m] map frame
   double lat_deg = 0.0, lon_deg = 0.0;
   double to_bow = 0.0, to_stern = 0.0, to_port = 0.0, to_starboard = 0.0;  // [m], 0 = unknown
-  std::int64_t stamp_ns = 0;  // receive time of the last report
+  std::int64_t stamp_ns = 0;                                               // receive time of the last report
 };
 
 struct AidTableConfig {

@@ -35,16 +35,16 @@ enum class ArpaQuality : std::uint8_t { Tracking, Acquiring, NoVelocity };
 struct ArpaTarget {
   int number = 0;  // the radar's target number, 0..65535
   std::string name;
-  Eigen::Vector2d position = Eigen::Vector2d::Zero();      // [m] map frame
-  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();    // [m^2] of the position, ENU
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();    // [m] map frame
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  // [m^2] of the position, ENU
   bool has_geodetic = false;
   double lat_deg = 0.0, lon_deg = 0.0;
   bool has_velocity = false;
-  double course = 0.0, speed = 0.0;  // [rad] nautical in [0, 2 pi), [m/s]; 0 when unknown
+  double course = 0.0, speed = 0.0;                    // [rad] nautical in [0, 2 pi), [m/s]; 0 when unknown
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  // [m/s] ENU; 0 when unknown
-  bool acquiring = false;            // the last TTM said status Q
-  std::int64_t stamp_ns = 0;         // receive time of the last fix
-  bool updated = false;              // fixed since the last due()
+  bool acquiring = false;                              // the last TTM said status Q
+  std::int64_t stamp_ns = 0;                           // receive time of the last fix
+  bool updated = false;                                // fixed since the last due()
   ArpaQuality quality() const;
 };
 

@@ -23,8 +23,8 @@ struct IngestionConfig {
   double origin_lat_deg = 0.0;
   double origin_lon_deg = 0.0;
   std::string frame_id = "map";
-  double publish_rate = 10.0;             // [Hz] the node's targets topic
-  double silence_warning = 30.0;          // [s] diagnostics warn when no sentence came for this long
+  double publish_rate = 10.0;     // [Hz] the node's targets topic
+  double silence_warning = 30.0;  // [s] diagnostics warn when no sentence came for this long
   // [s] an empty targets array this often when nothing was reported, so that the tracker tells a quiet
   // sea from a dead node (its watch/input_timeout, 1.5 s, is three of these)
   double heartbeat_period = 0.5;
@@ -38,10 +38,11 @@ struct IngestionConfig {
 
 // The target table's limits, keys max_range, max_targets, forget_after (this one function reads them
 // for both nodes).
-void readTableLimits(const ParamMap& params, double& max_range, std::size_t& max_targets, double& forget_after);
+void readTableLimits(const ParamMap& params, double& max_range, std::size_t& max_targets,
+                     double& forget_after);
 
 struct AisNodeConfig : IngestionConfig {
-  AisTargetConfig targets;  // max_range, max_targets (5000), forget_after (900 s), position sigmas
+  AisTargetConfig targets;         // max_range, max_targets (5000), forget_after (900 s), position sigmas
   ais::DecoderConfig decoder;      // fragment_timeout, max_pending
   std::size_t max_static = 10000;  // ships whose static data is remembered
   AidTableConfig aids;             // aids/max_aids, aids/forget_after; max_range is the ships' one

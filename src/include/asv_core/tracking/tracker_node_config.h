@@ -17,7 +17,7 @@ struct TrackerNodeConfig {
   double default_position_sigma = 50.0;  // [m] when a report's covariance is all 0 (unknown)
   double ais_velocity_sigma = 0.2;       // [m/s] 1-sigma of an AIS velocity per axis
   double arpa_velocity_sigma = 0.5;      // [m/s] 1-sigma of an ARPA velocity per axis
-  TrackerConfig tracker;  // keys gate_min ... max_tracks, ages/<class>/{coast_after,drop_after}
+  TrackerConfig tracker;   // keys gate_min ... max_tracks, ages/<class>/{coast_after,drop_after}
   InputWatchConfig watch;  // watch/*: ais/targets and arpa/targets (heartbeats) stale: alarm
 
   void validate() const;  // std::invalid_argument naming the parameter

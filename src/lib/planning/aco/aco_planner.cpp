@@ -132,10 +132,12 @@ void setDomain(const HexagonDomainConfig& domain, Target& mt) {
 
 }  // namespace
 
-HexagonDomainConfig targetDomain(const PlannerTarget& t, const HexagonDomainConfig& domain, double colregs_factor) {
+HexagonDomainConfig targetDomain(const PlannerTarget& t, const HexagonDomainConfig& domain,
+                                 double colregs_factor) {
   // By the encounter alone, not the risk level: a plan made before the risk is established (a
   // predicted close pass) must already leave the target on the side the rules will want.
-  if (colregs_factor == 1.0 || (t.encounter != Encounter::HeadOn && t.encounter != Encounter::CrossingGiveWay))
+  if (colregs_factor == 1.0 ||
+      (t.encounter != Encounter::HeadOn && t.encounter != Encounter::CrossingGiveWay))
     return domain;
   HexagonDomainConfig give_way = domain;
   give_way.a *= colregs_factor;

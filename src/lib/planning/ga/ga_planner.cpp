@@ -283,7 +283,8 @@ GaCostTerms GaFitness::terms(double alteration) const {
   j.turn = cfg_.turn_penalty * std::fabs(alteration) / degToRad(cfg_.max_alteration_deg);
   if (land_required_ > 0.0) {
     const Eigen::Vector2d leg_end = own_.position + v_own * legTime(alteration);
-    if (trackObstacleDistance(truncateTrack({own_.position, leg_end, next_}, land_reach_), *land_) < land_required_)
+    if (trackObstacleDistance(truncateTrack({own_.position, leg_end, next_}, land_reach_), *land_) <
+        land_required_)
       j.land = kLandCost;
   }
   j.total = j.risk + j.new_risk + j.safety + j.colregs + j.turn + j.land;

@@ -243,15 +243,18 @@ double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen:
   if (slo.x() > hi.x() + clearance || shi.x() < lo.x() - clearance || slo.y() > hi.y() + clearance ||
       shi.y() < lo.y() - clearance)
     return 0.0;
-  return violation(clearance, [&] { return segmentLengthInside(poly, p, q); },
-                   [&] { return segmentPolygonDistance(poly, p, q); });
+  return violation(
+      clearance, [&] { return segmentLengthInside(poly, p, q); },
+      [&] { return segmentPolygonDistance(poly, p, q); });
 }
 
-double landViolation(const StaticObstacle& o, const Eigen::Vector2d& p, const Eigen::Vector2d& q, double clearance) {
+double landViolation(const StaticObstacle& o, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                     double clearance) {
   if (!o.index)
     return landViolation(o.polygon, p, q, clearance);  // with its cheap box reject
-  return violation(clearance, [&] { return o.index->lengthInside(p, q); },
-                   [&] { return o.index->boundaryDistance(p, q); });
+  return violation(
+      clearance, [&] { return o.index->lengthInside(p, q); },
+      [&] { return o.index->boundaryDistance(p, q); });
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -110,7 +110,8 @@ struct AcoConfig {
 // and extrapolated at constant course and speed (the paper's assumption).
 // The hexagon round target t: `domain`, with a and c times colregs_factor when the own ship meets her
 // head-on or gives way to her (AcoConfig::colregs_factor).
-HexagonDomainConfig targetDomain(const PlannerTarget& t, const HexagonDomainConfig& domain, double colregs_factor);
+HexagonDomainConfig targetDomain(const PlannerTarget& t, const HexagonDomainConfig& domain,
+                                 double colregs_factor);
 
 class AcoEnvironment {
 public:

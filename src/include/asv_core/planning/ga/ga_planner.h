@@ -158,7 +158,7 @@ struct GaCostTerms {
   // end back to the route, comes closer to land than the clearance; such a heading is taken only when
   // every heading would.
   double land = 0.0;
-  double total = 0.0;     // the GA's objective J (lower is better); Plan::cost of the best
+  double total = 0.0;  // the GA's objective J (lower is better); Plan::cost of the best
 };
 
 // The fitness of a candidate alteration, built once per planning problem. The original course is the
@@ -200,8 +200,8 @@ private:
   std::vector<Target> targets_;
   std::vector<GaTargetInfo> info_;
   const std::vector<StaticObstacle>* land_ = nullptr;
-  double land_required_ = 0.0;  // [m] landRequirement of the problem; 0: no land
-  double land_reach_ = 0.0;     // [m] how far along the candidate's track land is judged
+  double land_required_ = 0.0;                      // [m] landRequirement of the problem; 0: no land
+  double land_reach_ = 0.0;                         // [m] how far along the candidate's track land is judged
   Eigen::Vector2d next_ = Eigen::Vector2d::Zero();  // the route's next point (or the goal)
 };
 

@@ -61,7 +61,7 @@ struct MopsoConfig {
   double t_min_s = 60.0;    // [s] t_min of eq. (5); not given: 1 min keeps the new course readily apparent
   double t_max_s = 1800.0;  // [s] t_max of eq. (5); not given: 30 min, enough to open 1 nm at 15 deg
                             // and 8 kn, short enough to keep near the planned route
-  bool prefer_starboard = true;     // impose eq. (6) in a first pass, relax it only if that finds nothing
+  bool prefer_starboard = true;  // impose eq. (6) in a first pass, relax it only if that finds nothing
   // Sea-mode extension (not in the paper): d_min of eq. (8) is raised to kSeparationMargin x the
   // situation's minimum separation (planning.h) when that is larger. Paper mode: false, d_min as set.
   bool inflate = true;
@@ -147,7 +147,8 @@ double safetyViolation(double f);                                      // eq. (1
 double landViolation(const Polygon& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                      double clearance);
 // The same through the obstacle's index when it has one (a coastline).
-double landViolation(const StaticObstacle& o, const Eigen::Vector2d& p, const Eigen::Vector2d& q, double clearance);
+double landViolation(const StaticObstacle& o, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                     double clearance);
 
 // --- MOPSO building blocks ---
 
@@ -247,7 +248,7 @@ struct MopsoResult {
   int chosen = -1;                          // index into pareto_front, -1 when no plan was optimised
   // 1: eq. (6) imposed; 2: relaxed; 3: Rule 17(c) kept a starboard plan inside d_min; 0: no optimisation
   int pass = 0;
-  int generations_run = 0;                  // over both passes
+  int generations_run = 0;  // over both passes
   long evaluations = 0;
 };
 
