@@ -14,17 +14,25 @@ BUILD_TYPE ?= Release
 # WERROR=1 (CI sets it): every compiler warning fails the build. Changing it rebuilds everything.
 WERROR ?= 0
 CXXFLAGS_EXTRA := $(if $(filter 1,$(WERROR)),-Werror,)
+# ccache (scripts/setup installs it) caches every compilation outside the clone, so a fresh clone on the
+# same machine (CI's) rebuilds from the cache. CCACHE_BASEDIR makes the clone's absolute paths relative,
+# so two clones in different folders share the entries. CCACHE_DIR may point elsewhere.
+export CCACHE_DIR ?= $(HOME)/.cache/ccache
+export CCACHE_BASEDIR := $(CURDIR)
+export CCACHE_MAXSIZE ?= 5G
+LAUNCHER := $(if $(shell command -v ccache),-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache,)
 CATKIN := catkin_make --source $(CURDIR) --build $(CURDIR)/build \
           -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_WHITELIST_PACKAGES="" \
-          -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_CXX_FLAGS="$(CXXFLAGS_EXTRA)"
+          -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_CXX_FLAGS="$(CXXFLAGS_EXTRA)" $(LAUNCHER)
 DEVEL := source $(CURDIR)/devel/setup.bash
 
-.PHONY: help setup build test install bench benchmark demo clean format lint eval eval-ros papers soak test-asan fuzz-long
+.PHONY: help setup build build-nosetup test check install bench benchmark demo clean format lint eval eval-ros papers soak test-asan fuzz-long
 
 help:
 	@echo "asv stack: make targets"
 	@echo "  make demo    install what is missing, build, run the headline scenario through ROS"
-	@echo "  make test    install what is missing, build, run every unit test and rostest"
+	@echo "  make test    install what is missing, build, run every unit test and rostest (time per phase)"
+	@echo "  make check   build and run the unit tests alone (no master, no ASan): the inner loop"
 	@echo "  make build   build the catkin workspace (build/, devel/)"
 	@echo "  make install install every package into install/ (source install/setup.bash)"
 	@echo "  make bench   run the Google Benchmark executables, JSON into out/bench/"
@@ -49,25 +57,24 @@ setup:
 # test node can import asv_msgs. So the folder exists before the first configure, and a build tree
 # configured without it is configured again.
 build: setup
+	@$(MAKE) --no-print-directory build-nosetup
+
+# The catkin build alone (make build and scripts/test_all.sh, which times setup on its own).
+build-nosetup:
 	@mkdir -p devel/lib/python3/dist-packages
 	@$(CATKIN) -j$(JOBS)
 	@grep -q "^export PYTHONPATH=.*$(CURDIR)/devel/lib/python3/dist-packages" build/catkin_generated/setup_cached.sh \
 	  || $(CATKIN) -j$(JOBS) --force-cmake
 
-test: build
-	@$(CATKIN) -j$(JOBS) tests
-	@rm -rf build/test_results
-	@$(DEVEL) && $(CATKIN) run_tests -j1 > build/run_tests.log 2>&1 || true
-	@grep -E "^\[ROSTEST\].*results summary|FAILED|Segmentation|Aborted|MISSING|ModuleNotFoundError|ImportError" build/run_tests.log || true
-	@scripts/fuzz_smoke.sh || true
-	@scripts/catkin_lint_check.py build/test_results/catkin_lint.xml || true
-	@$(DEVEL) && scripts/readme_check.py build/test_results/readme_check.xml || true
-	@scripts/plot_check.py build/test_results/plot_check.xml || true
-	@$(DEVEL) && scripts/papers_check.py build/test_results/papers_check.xml || true
-	@JOBS=$(JOBS) scripts/install_check.py build/test_results/install_check.xml || true
-	@if [ "$(ASAN)" = 1 ]; then echo "test: asv_core unit tests under ASan+UBSan (build_asan/, log build/asan.log)..."; \
-	  JOBS=$(JOBS) scripts/asan_tests.sh > build/asan.log 2>&1 || true; fi
-	@scripts/test_summary.py build/test_results
+# make test and make check (scripts/test_all.sh): each phase timed, test executables JOBS at a time,
+# logs in build/test_logs/, the closing line `N passed, N failed, N skipped`.
+export ASV_CATKIN := $(CATKIN)
+export JOBS ASAN
+test:
+	@scripts/test_all.sh
+
+check:
+	@scripts/test_all.sh --check
 
 # The install space (install/): every package's nodes, launch files, configs, scenarios and headers.
 # make test checks it on its own (scripts/install_check.py). Then: source install/setup.bash.
@@ -102,6 +109,7 @@ demo: build
 clean:
 	rm -rf build build_asan devel install out CMakeLists.txt
 
+# make test fails on any difference (scripts/format_check.py).
 format:
 	@find src asv_* -name '*.cpp' -o -name '*.h' | xargs clang-format -i
 

@@ -11,6 +11,7 @@
 # when it left no XML (a crash) the XML is written here as a failure; when it left one and still failed
 # (a sanitizer report after the tests, e.g. a leak at exit) a second file <name>-exit.xml records it.
 # Logs: build_asan/test_logs/<name>.log. Exit status 1 when the build or any executable failed.
+# The executables run JOBS at a time; compilations go through ccache when it is installed.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -24,6 +25,10 @@ command -v "$cxx" >/dev/null || cxx=g++
 cc=$([ "${cxx#clang}" != "$cxx" ] && echo clang || echo gcc)
 san="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
 mkdir -p "$bdir" "$logs"
+# ccache (as in the Makefile): the clone's paths made relative, so other clones share the entries.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
+launcher=""
+command -v ccache >/dev/null && launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache"
 rm -rf "$res" && mkdir -p "$res"
 
 junit_fail() {  # file name message
@@ -39,7 +44,7 @@ if ! CC=$cc CXX=$cxx catkin_make --source "$root" --build "$bdir" \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g" \
     -DCMAKE_CXX_FLAGS="$san" -DCMAKE_C_FLAGS="$san" \
     -DCMAKE_EXE_LINKER_FLAGS="$san" -DCMAKE_SHARED_LINKER_FLAGS="$san" \
-    -DPYTHON_EXECUTABLE=/usr/bin/python3 -j"${JOBS:-1}" tests $tools > "$bdir/build.log" 2>&1; then
+    -DPYTHON_EXECUTABLE=/usr/bin/python3 $launcher -j"${JOBS:-1}" tests $tools > "$bdir/build.log" 2>&1; then
   tail -30 "$bdir/build.log"
   echo "asan: build FAILED, see $bdir/build.log"
   junit_fail "$res/asan-build.xml" build "build failed, see build_asan/build.log"
@@ -49,26 +54,20 @@ fi
 # LeakSanitizer on; stop at the first UB report with a stack trace.
 export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-status=0
-count=0
-for src in src/test/test_*.cpp; do
-  name=core_$(basename "$src" .cpp)
-  exe=$bdir/devel/lib/asv_core/$name
-  xml=$res/$name.xml
-  count=$((count + 1))
+
+# run_one NAME: one test executable, its log and JUnit XML; prints one line; exit status 1 on a failure.
+run_one() {
+  local name=$1 exe=$bdir/devel/lib/asv_core/$1 xml=$res/$1.xml start=$SECONDS rc what msg
   if [ ! -x "$exe" ]; then
     junit_fail "$xml" "$name" "executable not built: $exe"
-    echo "asan: $name MISSING"; status=1; continue
+    echo "asan: $name MISSING"; return 1
   fi
-  start=$SECONDS
   (cd src/test && timeout "${ASAN_TEST_TIMEOUT:-1800}" "$exe" --gtest_output="xml:$xml") > "$logs/$name.log" 2>&1
   rc=$?
-  secs=$((SECONDS - start))
   if [ "$rc" -eq 0 ]; then
-    echo "asan: $name clean (${secs} s)"
-    continue
+    echo "asan: $name clean ($((SECONDS - start)) s)"
+    return 0
   fi
-  status=1
   what=$(grep -m1 -oE "(ERROR: (AddressSanitizer|LeakSanitizer): [a-z-]+( memory leaks)?|runtime error: .{0,160})" "$logs/$name.log" \
          | tr '"<>&' "'___")
   [ "$rc" -eq 124 ] && what="timeout after ${ASAN_TEST_TIMEOUT:-1800} s"
@@ -85,6 +84,15 @@ for src in src/test/test_*.cpp; do
     junit_fail "$xml" "$name" "no result: $msg"
   fi
   echo "asan: $name FAILED: $msg"
-done
+  return 1
+}
+export -f run_one junit_fail
+export bdir res logs
+
+# The executables JOBS at a time.
+names=$(for src in src/test/test_*.cpp; do echo "core_$(basename "$src" .cpp)"; done)
+count=$(echo "$names" | wc -l)
+echo "$names" | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one "$@"' _ {}
+status=$?
 echo "asan: $count test executables, results in build/test_results/asan/"
-exit $status
+[ "$status" -eq 0 ]

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# make test and make check: every phase timed, the slowest tests named, the summary line last.
+# Usage: scripts/test_all.sh [--check]     (run by make, which exports ASV_CATKIN, JOBS and ASAN)
+#   make test:  setup, build, test build, unit tests, rostests, ASan+UBSan unit tests, fuzz smoke runs,
+#               checks (clang-format, catkin_lint, README, plots, papers, install space)
+#   make check: build, test build and the unit tests alone (the inner loop: no master, no ASan)
+# Independent test executables run JOBS at a time under ctest (each writes its own JUnit XML and a
+# rostest starts its own master on a free port). The last line is scripts/test_summary.py's
+# `N passed, N failed, N skipped`; exit status 1 when anything failed.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+: "${ASV_CATKIN:?run through make test or make check (the Makefile sets ASV_CATKIN)}"
+JOBS=${JOBS:-2}
+ASAN=${ASAN:-1}
+mode=test
+[ "${1:-}" = "--check" ] && mode=check
+logs=build/test_logs
+results=build/test_results
+
+phase_names=()
+phase_secs=()
+# phase NAME COMMAND...: runs the command, records its wall time; returns the command's status.
+phase() {
+  local name=$1 t0=$SECONDS rc
+  shift
+  echo "== $name"
+  "$@"
+  rc=$?
+  phase_names+=("$name")
+  phase_secs+=($((SECONDS - t0)))
+  return $rc
+}
+
+build_tests() { eval "$ASV_CATKIN -j$JOBS tests"; }
+
+# ctest_group NAME REGEX: the catkin tests whose ctest name matches, JOBS at a time; the log keeps each
+# test's time (Test #n: name ... sec) and the output of the failures.
+ctest_group() {
+  local name=$1 regex=$2
+  ctest --test-dir build -j"$JOBS" -R "$regex" --timeout 1800 --output-on-failure > "$logs/$name.log" 2>&1
+  grep -E "tests passed|tests failed" "$logs/$name.log"
+  grep -E "\*\*\*|Failed|Timeout" "$logs/$name.log" | grep -E "^ *[0-9]+/[0-9]+ Test" || true
+  return 0
+}
+
+checks() {
+  scripts/format_check.py "$results/format_check.xml" || true
+  scripts/catkin_lint_check.py "$results/catkin_lint.xml" || true
+  (source devel/setup.bash && scripts/readme_check.py "$results/readme_check.xml") || true
+  scripts/plot_check.py "$results/plot_check.xml" || true
+  (source devel/setup.bash && scripts/papers_check.py "$results/papers_check.xml") || true
+  JOBS=$JOBS scripts/install_check.py "$results/install_check.xml" || true
+}
+
+asan() {
+  echo "asv_core unit tests under ASan+UBSan (build_asan/, log $logs/asan.log)"
+  JOBS=$JOBS scripts/asan_tests.sh > "$logs/asan.log" 2>&1
+  grep -E "FAILED|MISSING|executables" "$logs/asan.log"
+  return 0
+}
+
+# The slowest tests of every ctest log, for the table below.
+slowest() {
+  cat "$logs"/unit.log "$logs"/rostest.log 2>/dev/null \
+    | sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: _ctest_([a-z_]+)_(gtest|rostest)_([^ ]+) .* ([0-9.]+) sec$/\4 \1 \3/p' \
+    | sort -rn | head -"$1"
+}
+
+mkdir -p "$logs"
+if [ "$mode" = test ]; then
+  phase setup scripts/setup || exit 1
+fi
+phase build make --no-print-directory build-nosetup || { echo "0 passed, 1 failed (the build)"; exit 1; }
+phase "test build" build_tests || { echo "0 passed, 1 failed (the test build)"; exit 1; }
+rm -rf "$results"
+mkdir -p "$results"
+phase "unit tests" ctest_group unit "_gtest_"
+if [ "$mode" = test ]; then
+  phase rostests ctest_group rostest "_rostest_"
+  [ "$ASAN" = 1 ] && phase "ASan+UBSan" asan
+  phase "fuzz smoke" scripts/fuzz_smoke.sh
+  phase checks checks
+fi
+
+total=0
+echo
+echo "== time per phase ($(nproc) cores, JOBS=$JOBS)"
+for i in "${!phase_names[@]}"; do
+  printf '  %-12s %5d s\n' "${phase_names[$i]}" "${phase_secs[$i]}"
+  total=$((total + phase_secs[i]))
+done
+printf '  %-12s %5d s (%d min)\n' total "$total" $((total / 60))
+echo "== slowest test executables (s, package, name)"
+slowest 8 | sed 's/^/  /'
+echo
+scripts/test_summary.py "$results"
