@@ -24,7 +24,7 @@ import time
 # range's seed plus the situation index. Never tune on the test range.
 RANGES = [("test", 7919), ("tuning", 1)]
 PLANNERS = ["aco", "mopso", "ga", "dssa", "dssa_plus"]
-CLASSES = ["head_on", "crossing_give_way", "crossing_stand_on", "overtaking", "overtaken", "rule_breaker",
+CLASSES = ["head_on", "crossing_give_way", "crossing_stand_on", "overtaking", "being_overtaken", "rule_breaker",
            "multi", "converging", "coastal"]
 # The pass rules the planners are held to (docs/evaluation.md): no own-ship collision or grounding, the
 # minimum separation kept in at least 99 % of runs, mean COLREGs score >= 0.95 with one target, >= 0.85 with

@@ -3,8 +3,8 @@
 
 Usage: install_check.py OUT.xml
 1. `catkin_make install` into install/ (the build space's CMAKE_INSTALL_PREFIX).
-2. A third-party planner plugin compiles against the installed headers alone (asv_planning's
-   planner_plugin.h and what it includes from asv_core and asv_msgs).
+2. A third-party planner plugin compiles against the installed headers alone (asv_core's planner
+   interface, asv_planning's loader, and what they include).
 3. With only install/setup.bash sourced (a fresh environment: no devel space, no source folders on the
    package path), every package is found in install/, and scenario.launch runs head_on end to end
    (lockstep, 120 simulated seconds, the installed scenario, rviz config and vessel presets) and writes
@@ -23,9 +23,15 @@ import junit_case
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 INSTALL = os.path.join(ROOT, "install")
-PLUGIN = """#include <asv_planning/planner_plugin.h>
+PLUGIN = """#include <asv_core/planning/planning.h>
+#include <asv_planning/plugin_loader.h>
 // A third party's planner, built against the installed headers only.
-class Straight : public asv_planning::PlannerPlugin {};
+class Straight : public asv::PlannerAlgorithm {
+public:
+  void configure(const asv::ParamMap&) override {}
+  asv::Plan plan(const asv::PlanningProblem&) override { return {}; }
+  std::string name() const override { return "straight"; }
+};
 int main() { return 0; }
 """
 

@@ -2,7 +2,8 @@
 # make test and make check: every phase timed, the slowest tests named, the summary line last.
 # Usage: scripts/test_all.sh [--check]     (run by make, which exports ASV_CATKIN, JOBS and ASAN)
 #   make test:  setup, build, test build, unit tests, rostests, ASan+UBSan unit tests, fuzz smoke runs,
-#               checks (clang-format, catkin_lint, README, plots, papers, install space)
+#               checks (clang-format, the layering allow-list, clang-tidy, catkin_lint, README, plots,
+#               papers, install space)
 #   make check: build, test build and the unit tests alone (the inner loop: no master, no ASan)
 # Independent test executables run JOBS at a time under ctest (each writes its own JUnit XML and a
 # rostest starts its own master on a free port). The last line is scripts/test_summary.py's
@@ -45,6 +46,8 @@ ctest_group() {
 
 checks() {
   scripts/format_check.py "$results/format_check.xml" || true
+  scripts/layers_check.py "$results/layers_check.xml" || true
+  JOBS=$JOBS scripts/lint_check.py "$results/lint_check.xml" || true
   scripts/catkin_lint_check.py "$results/catkin_lint.xml" || true
   (source devel/setup.bash && scripts/readme_check.py "$results/readme_check.xml") || true
   scripts/plot_check.py "$results/plot_check.xml" || true
@@ -67,6 +70,7 @@ slowest() {
 }
 
 mkdir -p "$logs"
+rm -f "$logs"/*.log
 if [ "$mode" = test ]; then
   phase setup scripts/setup || exit 1
 fi

@@ -1,11 +1,10 @@
 #include "asv_planning/autopilot_bridge_node.h"
 
 #include <asv_core/common/units.h>
-#include <asv_core/sim/scenario.h>
+#include <asv_core/world/scenario.h>
+#include <asv_ros/conversions.h>
 #include <asv_ros/params.h>
 #include <geometry_msgs/TwistStamped.h>
-
-#include "asv_planning/odometry.h"
 
 namespace asv_planning {
 
@@ -73,12 +72,13 @@ void AutopilotBridgeNode::cmdCallback(const asv_msgs::CourseSpeedSetpoint::Const
 }
 
 void AutopilotBridgeNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
-  const std::optional<asv::ShipState> s = shipStateFromOdometry(*msg, "own");
-  if (!s) {
-    ROS_WARN_THROTTLE(5.0, "autopilot_bridge: non-finite odometry ignored");
+  asv::ShipState s;
+  const asv_ros::Reject why = asv_ros::odometryToShipState(*msg, "own", s);
+  if (why != asv_ros::Reject::None) {
+    ROS_WARN_THROTTLE(5.0, "autopilot_bridge: odometry ignored (%s)", asv_ros::toString(why));
     return;
   }
-  bridge_->own(s->position, s->course, s->speed, s->heading, ros::Time::now().toSec(), asv_ros::wallNow());
+  bridge_->own(s.position, s.course, s.speed, s.heading, ros::Time::now().toSec(), asv_ros::wallNow());
 }
 
 bool AutopilotBridgeNode::armService(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res) {

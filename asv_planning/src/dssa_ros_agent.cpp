@@ -13,8 +13,6 @@
 #include <nav_msgs/Path.h>
 #include <tf2/utils.h>
 
-#include "asv_planning/odometry.h"
-
 namespace asv_planning {
 
 DssaExchangeParams DssaExchangeParams::fromParams(const asv::ParamMap& ex) {
@@ -57,7 +55,7 @@ bool DssaRosAgent::wanted(const std::string& planner, bool distributed) {
   return distributed && (planner == "dssa" || planner == "dssa_plus");
 }
 
-asv::DssaConfig DssaRosAgent::configOf(const PlannerPlugin& plugin) {
+asv::DssaConfig DssaRosAgent::configOf(const asv::PlannerAlgorithm& plugin) {
   // The loaded plugin's parameters (its sea-scale defaults and the node's keys), read as the plugin's
   // DssaPlanner reads them: the agents plan exactly as the plugin would.
   const std::string name = plugin.name();
@@ -121,14 +119,15 @@ DssaRosAgent::~DssaRosAgent() {
 }
 
 void DssaRosAgent::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
-  const std::optional<asv::ShipState> s = shipStateFromOdometry(*msg, opt_.ship);
-  if (!s) {
-    ROS_WARN_THROTTLE(5.0, "planner_node: non-finite odometry ignored");
+  asv::ShipState s;
+  const asv_ros::Reject why = asv_ros::odometryToShipState(*msg, opt_.ship, s);
+  if (why != asv_ros::Reject::None) {
+    ROS_WARN_THROTTLE(5.0, "planner_node: odometry ignored (%s)", asv_ros::toString(why));
     return;
   }
   const double t = msg->header.stamp.isZero() ? ros::Time::now().toSec() : msg->header.stamp.toSec();
   std::lock_guard<std::mutex> lock(mu_);
-  own_ = std::make_pair(*s, t);
+  own_ = std::make_pair(s, t);
 }
 
 void DssaRosAgent::intentionCallback(const asv_msgs::Intention::ConstPtr& msg) {

@@ -1,14 +1,12 @@
 #include "asv_planning/planner_node.h"
 
-#include "asv_planning/odometry.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
 #include <sstream>
 
-#include <asv_core/sim/scenario.h>
+#include <asv_core/world/scenario.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
 #include <asv_ros/conversions.h>
@@ -23,11 +21,11 @@ namespace {
 
 constexpr const char* kYaml = "asv_planning/config/planner_node.yaml";
 
-// The subtrees under ~ that are not the node's keys: every plugin's own ~<planner>/ (a live switch may
-// load any of them) and DssaRosAgent's exchange/.
+// The subtrees under ~ that are not the node's keys: every declared planner's own ~<planner>/ (a live
+// switch may load any of them) and DssaRosAgent's exchange/.
 std::vector<std::string> otherSubtrees() {
   std::vector<std::string> skip{"exchange/"};
-  for (const std::string& p : asv::knownPlanners())
+  for (const std::string& p : PluginLoader().parameterNames())
     skip.push_back(p + "/");
   return skip;
 }
@@ -47,7 +45,7 @@ asv::PlannerNodeConfig plannerConfig(const asv::ParamMap& params) {
 // any machine. Paper mode switches the follower's sea extensions off, and the replanning on rising risk of
 // a method that plans once (applyPlannerMode).
 asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool lockstep,
-                                       const std::string& mode, const PlannerPlugin& plugin) {
+                                       const std::string& mode, const asv::PlannerAlgorithm& plugin) {
   asv::PlanFollowerConfig fc = p.follower;
   if (lockstep)
     fc.time_budget = p.lockstep_time_budget;
@@ -55,17 +53,19 @@ asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool loc
   return fc;
 }
 
-// A track as the planners see it (the tracker has checked its values; selectPlannerTargets drops a
-// non-finite one).
-asv::ShipState trackState(const asv_msgs::Target& t) {
-  asv::ShipState s;
-  s.id = t.id;
-  s.position = {t.position.x, t.position.y};
-  s.course = t.course_over_ground;
-  s.speed = t.speed_over_ground;
-  s.heading = t.has_heading ? t.heading : t.course_over_ground;
-  s.length = t.length;
-  return s;
+// The tracks as the planners see them, through the checks every node applies to a target (the tracker
+// has checked its values; one that fails now is dropped and logged).
+std::vector<asv::ShipState> trackStates(const asv_msgs::TargetArray& targets) {
+  std::vector<asv::ShipState> tracks;
+  for (const auto& t : targets.targets) {
+    asv::ShipState s;
+    const asv_ros::Reject why = asv_ros::targetToShipState(t, s);
+    if (why == asv_ros::Reject::None)
+      tracks.push_back(s);
+    else
+      ROS_WARN_THROTTLE(5.0, "planner_node: track '%s' ignored (%s)", t.id.c_str(), asv_ros::toString(why));
+  }
+  return tracks;
 }
 
 using AssessedTargets = std::map<std::string, asv::PlannerTarget>;
@@ -73,16 +73,8 @@ using AssessedTargets = std::map<std::string, asv::PlannerTarget>;
 // The risk fields of each assessed target, by id (selectPlannerTargets adds the tracks).
 AssessedTargets assessedBy(const asv_msgs::RiskAssessment& risk) {
   AssessedTargets assessed;
-  for (const auto& r : risk.targets) {
-    asv::PlannerTarget& pt = assessed[r.target_id];
-    pt.risk = static_cast<asv::RiskLevel>(r.risk_level);
-    pt.compliant = r.compliant;
-    pt.encounter = static_cast<asv::Encounter>(r.encounter);
-    pt.role = static_cast<asv::OwnRole>(r.own_role);
-    pt.cri = r.cri;
-    pt.tcpa = r.tcpa;
-    pt.dcpa = r.dcpa;
-  }
+  for (const auto& r : risk.targets)
+    asv_ros::riskFromMsg(r, assessed[r.target_id]);
   return assessed;
 }
 
@@ -165,8 +157,9 @@ void PlannerNode::applyScenario() {
 // A plugin's parameters: the node's ~<planner>/ over the scenario's planner_params (the plugin checks
 // its keys).
 asv::ParamMap PlannerNode::pluginParams(const std::string& planner) const {
-  asv::ParamMap m = scenario_planners_.sub(planner);
-  m.merge(node_params_.sub(planner));
+  const std::string key = PluginLoader::parameterName(planner);
+  asv::ParamMap m = scenario_planners_.sub(key);
+  m.merge(node_params_.sub(key));
   if (!params_.mode.empty())
     m.set("mode", params_.mode);  // the node's ~mode over the plugin's own
   return m;
@@ -262,13 +255,14 @@ void PlannerNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
   nav_msgs::Odometry o = *msg;
   if (!msg->header.frame_id.empty())
     o.pose.pose = asv_ros::transformPose(t, msg->pose.pose);  // the twist stays in the body frame (REP 105)
-  const std::optional<asv::ShipState> s = shipStateFromOdometry(o, params_.ship);
-  if (!s) {
-    ROS_WARN_THROTTLE(5.0, "planner_node: non-finite odometry ignored");
+  asv::ShipState s;
+  const asv_ros::Reject why = asv_ros::odometryToShipState(o, params_.ship, s);
+  if (why != asv_ros::Reject::None) {
+    ROS_WARN_THROTTLE(5.0, "planner_node: odometry ignored (%s)", asv_ros::toString(why));
     return;
   }
-  follower_->updateOwn(*s);
-  own_ = *s;
+  follower_->updateOwn(s);
+  own_ = s;
   watch_.received(odom_sub_.getTopic(), asv_ros::rosNow(), asv_ros::wallNow());
   if (first_input_ < 0.0)
     first_input_ = ros::Time::now().toSec();
@@ -328,18 +322,13 @@ std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
   if (!targets_ || !fresh(targets_->header.stamp))
     return {};
   const bool risk_fresh = risk_ && fresh(risk_->header.stamp);
-  std::vector<asv::ShipState> tracks;
-  for (const auto& t : targets_->targets)
-    tracks.push_back(trackState(t));
-  return withRisk(tracks, risk_fresh);
+  return withRisk(trackStates(*targets_), risk_fresh);
 }
 
 std::vector<asv::PlannerTarget> PlannerNode::lastPicture(const ros::Time& now) const {
   if (!targets_)
     return {};
-  std::vector<asv::ShipState> tracks;
-  for (const auto& t : targets_->targets)
-    tracks.push_back(trackState(t));
+  const std::vector<asv::ShipState> tracks = trackStates(*targets_);
   // Every last track counts, assessed or not (with its last assessment, however old): in degraded
   // operation a ship is a danger until shown not.
   return asv::PlanFollower::deadReckon(
@@ -355,42 +344,39 @@ std::vector<asv::PlannerTarget> PlannerNode::withRisk(const std::vector<asv::Shi
   return asv::selectPlannerTargets(params_.ship, tracks, assessed, risk_alive);
 }
 
-void PlannerNode::replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets) {
+asv::CycleResult PlannerNode::plan(const std::vector<asv::PlannerTarget>& targets) {
+  asv::CycleOptions options;
+  // Free-running, a plan made for a picture overrun_factor budgets old is not flown: the fallback keeps
+  // the ship safe until the next plan comes in time (diagnostics WARN). In lockstep planning costs no
+  // simulated time.
+  if (!lockstep_.enabled())
+    options.overrun_factor = params_.overrun_factor;
+  if (params_.fault_plan_delay > 0.0)  // fault injection: a plugin that overruns
+    options.after_plan = [this] { ros::WallDuration(params_.fault_plan_delay).sleep(); };
   const double now = ros::Time::now().toSec();
-  const asv::PlanningProblem pr = follower_->buildProblem(now, targets);
-  const ros::WallTime start = ros::WallTime::now();
-  asv::Plan plan;
-  try {
-    plan = asv::planInMode([this](const asv::PlanningProblem& p) { return plugin_->makePlan(p); }, pr,
-                           asv::parsePlannerMode(mode_, params_.planner));
-  } catch (const std::exception& e) {
-    ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), e.what());
-    plan = follower_->fallback(targets, std::string("plugin error: ") + e.what());
-  }
-  if (params_.fault_plan_delay > 0.0)
-    ros::WallDuration(params_.fault_plan_delay).sleep();  // fault injection: a plugin that overruns
-  last_compute_ = (ros::WallTime::now() - start).toSec();
-  max_compute_ = std::max(max_compute_, last_compute_);
-  if (!lockstep_.enabled() && last_compute_ > params_.overrun_factor * params_.follower.time_budget) {
-    // Made for a picture now overrun_factor budgets old: not flown. The fallback keeps the ship safe
-    // until the next plan comes in time (diagnostics WARN with this reason).
+  const asv::CycleResult r = asv::planningCycle(
+      *follower_, *plugin_, asv::parsePlannerMode(mode_, params_.planner), now, targets, options);
+  if (!r.replanned)
+    return r;
+  if (!r.error.empty())
+    ROS_ERROR_THROTTLE(5.0, "planner_node: plugin '%s' failed: %s", params_.planner.c_str(), r.error.c_str());
+  if (r.overran) {
     ++overruns_;
-    char why_late[160];
-    std::snprintf(why_late, sizeof why_late, "plugin overran its time budget: %.3f s > %.1f x %.3f s",
-                  last_compute_, params_.overrun_factor, params_.follower.time_budget);
-    ROS_WARN_THROTTLE(5.0, "planner_node: '%s' %s; fallback in force", params_.planner.c_str(), why_late);
-    plan = follower_->fallback(targets, why_late);
+    ROS_WARN_THROTTLE(5.0, "planner_node: '%s' %s; fallback in force", params_.planner.c_str(),
+                      r.proposed.message.c_str());
   }
-  plan.compute_time = last_compute_;
-  const asv::Plan& in_force = follower_->acceptPlan(std::move(plan), now, targets, why);
+  last_compute_ = r.proposed.compute_time;
+  max_compute_ = std::max(max_compute_, last_compute_);
   plan_stamp_ = ros::Time::now();
   watch_.busy(plan_stamp_.toSec(), asv_ros::wallNow());  // what came meanwhile is still queued
-  last_reason_ = why;
+  last_reason_ = r.why;
+  const asv::Plan& in_force = follower_->plan();
   ROS_INFO("planner_node: %s plan (%s) in %.1f ms: course %.1f deg, speed %.1f kn, %zu waypoints: %s",
-           asv::toString(in_force.status), why.c_str(), last_compute_ * 1e3,
+           asv::toString(in_force.status), r.why.c_str(), last_compute_ * 1e3,
            asv::radToDeg(in_force.course_setpoint), asv::mpsToKnots(in_force.speed_setpoint),
            in_force.waypoints.size(), in_force.message.c_str());
   publishPlan();
+  return r;
 }
 
 void PlannerNode::publishPlan() {
@@ -503,7 +489,7 @@ void PlannerNode::reconfigure(PlannerConfig& c, uint32_t /*level*/) {
   next.planner = c.planner.empty() ? scenario_planner_ : c.planner;
   next.mode = c.mode;
   asv::PlanFollowerConfig fc;
-  pluginlib::UniquePtr<PlannerPlugin> plugin;
+  pluginlib::UniquePtr<asv::PlannerAlgorithm> plugin;
   try {  // nothing changes unless the plugin loads and the whole set is valid
     if (next.planner != params_.planner || next.mode != mode_)
       plugin = loadPlugin(next.planner, next.mode);
@@ -535,8 +521,8 @@ void PlannerNode::reconfigure(PlannerConfig& c, uint32_t /*level*/) {
 
 // `planner` in `mode`, its parameters read from ~ again (the user may have set ~<planner>/ since the
 // start); throws when it cannot load.
-pluginlib::UniquePtr<PlannerPlugin> PlannerNode::loadPlugin(const std::string& planner,
-                                                            const std::string& mode) {
+pluginlib::UniquePtr<asv::PlannerAlgorithm> PlannerNode::loadPlugin(const std::string& planner,
+                                                                    const std::string& mode) {
   if (planner.empty() || planner == "none")
     throw std::invalid_argument("planner '" + planner + "': a running planner_node needs a planner");
   node_params_ = asv_ros::readParams(pnh_);
@@ -547,8 +533,11 @@ pluginlib::UniquePtr<PlannerPlugin> PlannerNode::loadPlugin(const std::string& p
 
 void PlannerNode::publishSetpoint() {
   double course = 0.0, speed = 0.0;
-  if (!follower_->setpoint(course, speed))
-    return;
+  if (follower_->setpoint(course, speed))
+    publishSetpoint(course, speed);
+}
+
+void PlannerNode::publishSetpoint(double course, double speed) {
   asv_msgs::CourseSpeedSetpoint sp;
   sp.header.stamp = ros::Time::now();
   sp.header.frame_id = params_.frame_id;
@@ -568,16 +557,16 @@ void PlannerNode::timerCallback() {
   const std::vector<asv::StaleInput> lost = lostInputs();
   if (!lost.empty()) {
     degrade(lost);
+    publishSetpoint();
   } else {
     alarm_->update({}, "");
     follower_->recover();
-    std::string why;
     const std::vector<asv::PlannerTarget> targets = targetsNow();
-    if (follower_->replanNeeded(ros::Time::now().toSec(), targets, why))
-      replan(why, targets);
+    const asv::CycleResult r = plan(targets);
     publishDomains(targets);
+    if (r.has_setpoint)
+      publishSetpoint(r.course, r.speed);
   }
-  publishSetpoint();
   updater_.update();
 }
 

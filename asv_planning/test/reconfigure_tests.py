@@ -62,7 +62,7 @@ class Pipeline(threading.Thread):
                 t.header.stamp, t.header.frame_id = now, "map"
                 self.targets.publish(t)
                 tr = TargetRisk(target_id="T1", risk_level=TargetRisk.RISK_COLLISION, compliant=True,
-                                encounter=TargetRisk.ENCOUNTER_HEAD_ON, own_role=TargetRisk.ROLE_BOTH_GIVE_WAY,
+                                encounter=TargetRisk.ENCOUNTER_HEAD_ON, own_role=TargetRisk.ROLE_GIVE_WAY,
                                 range=3900.0 - 2 * sailed, tcpa=(3900.0 - 2 * sailed) / 10.0, dcpa=100.0, cri=0.8)
                 r = RiskAssessment(own_ship="own", data_ok=True, targets=[tr])
                 r.header.stamp, r.header.frame_id = now, "map"

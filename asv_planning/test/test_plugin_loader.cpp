@@ -47,7 +47,7 @@ TEST(PluginLoader, EachPlannerLoadsByShortNameAndAltersToStarboardHeadOn) {
     auto plugin = loader.load(n, asv::ParamMap());
     ASSERT_TRUE(plugin) << n;
     EXPECT_EQ(plugin->name(), n);
-    const asv::Plan plan = plugin->makePlan(headOn());
+    const asv::Plan plan = plugin->plan(headOn());
     EXPECT_EQ(plan.status, asv::PlanStatus::Ok) << n << ": " << plan.message;
     // Northbound own ship: a starboard alteration takes the planned track east of the meeting line (the
     // set-point course is then between 000 and 180).

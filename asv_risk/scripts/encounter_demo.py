@@ -19,9 +19,9 @@ from asv_msgs.msg import RiskAssessment, Target, TargetArray
 from nav_msgs.msg import Odometry
 
 KN = 1852.0 / 3600.0
-ENC = {0: "none", 1: "head-on", 2: "crossing (give-way)", 3: "crossing (stand-on)", 4: "overtaking",
-       5: "being overtaken"}
-ROLE = {0: "-", 1: "give-way", 2: "stand-on", 3: "both give-way"}
+# The stack's vocabulary (asv_msgs/TargetRisk, the run result's encounter and own_role).
+ENC = {0: "none", 1: "head_on", 2: "crossing", 3: "overtaking", 4: "being_overtaken"}
+ROLE = {0: "none", 1: "give_way", 2: "stand_on"}
 RISK = {0: "0 none", 1: "1 risk", 2: "2 URGENT"}
 
 OWN_SPEED = 12 * KN

@@ -7,7 +7,7 @@
 #include <asv_core/common/units.h>
 #include <asv_ros/conversions.h>
 
-#include "asv_risk/conversions.h"
+#include "asv_risk/heartbeat.h"
 #include "asv_risk/params.h"
 #include "asv_risk/target_quality.h"
 
@@ -207,7 +207,7 @@ void AisNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
       c.bad_fields + c.bad_fill + c.bad_armour + c.empty_payload + c.too_short + c.too_long + c.bad_part;
   const std::uint64_t rejected = framer_.totalRejected() + reassembly_drops + decode_errors + rejected_values;
   stat.add("sentences per second", (framer_.sentences() - diag_sentences_) / dt);
-  framer_.diagnose(stat);
+  addFramerStats(framer_, stat);
   stat.add("AIS sentences", c.sentences);
   stat.add("other sentences", other_sentences_);
   stat.add("messages decoded", c.messages);

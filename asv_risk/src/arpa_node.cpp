@@ -7,7 +7,7 @@
 #include <asv_core/common/units.h>
 #include <asv_ros/conversions.h>
 
-#include "asv_risk/conversions.h"
+#include "asv_risk/heartbeat.h"
 #include "asv_risk/params.h"
 #include "asv_risk/target_quality.h"
 
@@ -264,7 +264,7 @@ void ArpaNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
     rejected += parse_errors_[i];
   }
   stat.add("sentences per second", (framer_.sentences() - diag_sentences_) / dt);
-  framer_.diagnose(stat);
+  addFramerStats(framer_, stat);
   stat.add("TTM", ttm_);
   stat.add("TLL", tll_);
   stat.add("OSD", osd_);

@@ -120,61 +120,9 @@ NmeaInputParams inputFromParams(const asv::ParamMap& in, NmeaInputParams p) {
   return p;
 }
 
-// ---- LineFramer ----
-
-void LineFramer::frame(std::string_view line,
-                       const std::function<void(const asv::nmea::Sentence&)>& on_sentence) {
-  namespace nmea = asv::nmea;
-  if (nmea::trim(line).empty())
-    return;
-  std::size_t pos = 0;
-  bool any = false;
-  while (pos < line.size()) {
-    const std::size_t start = nmea::findSentenceStart(line, pos);
-    if (start == std::string_view::npos)
-      break;
-    if (start > pos && !nmea::trim(line.substr(pos, start - pos)).empty())
-      ++garbage_;
-    any = true;
-    const nmea::Reject r = nmea::parseSentence(line.substr(start), sentence_, config_);
-    if (r == nmea::Reject::kNone) {
-      ++sentences_;
-      on_sentence(sentence_);
-      // Receiver metadata after the checksum is a suffix, not garbage: go to the next start.
-      const std::size_t next = nmea::findSentenceStart(line, start + sentence_.end);
-      if (next == std::string_view::npos)
-        break;
-      pos = next;
-      continue;
-    }
-    ++rejects_[static_cast<std::size_t>(r)];
-    pos = start + 1;
-  }
-  if (!any)
-    ++garbage_;
-}
-
-std::uint64_t LineFramer::checksumFailures() const {
-  using asv::nmea::Reject;
-  return rejected(Reject::kNoChecksum) + rejected(Reject::kBadChecksumFormat) +
-         rejected(Reject::kBadChecksum) + rejected(Reject::kTagBlockChecksum);
-}
-
-std::uint64_t LineFramer::totalRejected() const {
-  std::uint64_t n = garbage_;
-  for (std::size_t i = 1; i < static_cast<std::size_t>(asv::nmea::Reject::kCount); ++i)
-    n += rejects_[i];
-  return n;
-}
-
-void LineFramer::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) const {
-  stat.add("sentences framed", sentences_);
-  stat.add("checksum failures", checksumFailures());
-  stat.add("garbage lines", garbage_);
-  for (std::size_t i = 1; i < static_cast<std::size_t>(asv::nmea::Reject::kCount); ++i)
-    if (rejects_[i] > 0)
-      stat.add(std::string("framing rejected: ") + asv::nmea::rejectText(static_cast<asv::nmea::Reject>(i)),
-               rejects_[i]);
+void addFramerStats(const asv::nmea::LineFramer& framer, diagnostic_updater::DiagnosticStatusWrapper& stat) {
+  for (const auto& [label, count] : framer.counters())
+    stat.add(label, count);
 }
 
 // ---- NmeaInput ----

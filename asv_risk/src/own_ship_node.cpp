@@ -5,9 +5,11 @@
 #include <asv_core/common/units.h>
 #include <asv_ros/conversions.h>
 
-#include "asv_risk/conversions.h"
-
 namespace asv_risk {
+
+using asv_ros::enuTwistToMotion;
+using asv_ros::navSatToFix;
+using asv_ros::orientationToHeading;
 
 namespace {
 

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace asv_risk {
 

@@ -3,9 +3,13 @@
 #include <asv_core/common/units.h>
 #include <asv_ros/params.h>
 
-#include "asv_risk/conversions.h"
+#include <asv_ros/conversions.h>
 
 namespace asv_risk {
+
+using asv_ros::odometryToShipState;
+using asv_ros::Reject;
+using asv_ros::targetToShipState;
 
 namespace {
 

@@ -12,6 +12,10 @@
 
 namespace asv_risk {
 
+using asv_ros::odometryToShipState;
+using asv_ros::targetToShipState;
+using asv_ros::toMsg;
+
 namespace {
 
 // Every private parameter the node understands; anything else under ~ is a typo and an error.
@@ -241,12 +245,13 @@ visualization_msgs::MarkerArray RiskNode::makeMarkers(const asv_msgs::RiskAssess
     m.pose.position.y =
         ra.own_position.y + t.range * std::cos(t.bearing) - asv_ros::pixelsToMetres(42.0);  // below the ship
     m.scale.z = asv_ros::pixelsToMetres(12.0);
-    static const char* roles[] = {"-", "give-way", "stand-on", "both give-way"};
+    const asv::Encounter encounter = asv_ros::encounterFromMsg(t.encounter, t.own_role);
     std::ostringstream s;
     s.precision(2);
     s << std::fixed << t.target_id << " CRI " << t.cri << "\nTCPA " << t.tcpa / 60.0 << " min DCPA "
       << t.dcpa / 1852.0 << " nm\n"
-      << roles[std::min<uint8_t>(t.own_role, 3)] << (t.compliant ? "" : " NON-COMPLIANT");
+      << asv::toString(encounter) << " " << asv::toString(asv::ownRole(encounter))
+      << (t.compliant ? "" : " NON-COMPLIANT");
     m.text = s.str();
     arr.markers.push_back(m);
   }

@@ -118,7 +118,7 @@ TEST_F(RiskNodeTest, NonCompliantGiveWayTargetIsFlaggedWhenRiskBecomesUrgent) {
   EXPECT_NEAR(ts1->tcpa, 1000.0, 1e-6);
   EXPECT_NEAR(ts1->dcpa, 0.0, 1e-6);
   EXPECT_NEAR(ts1->range, std::hypot(6000.0, 6000.0), 1e-6);
-  EXPECT_EQ(ts1->encounter, TR::ENCOUNTER_CROSSING_STAND_ON);
+  EXPECT_EQ(ts1->encounter, TR::ENCOUNTER_CROSSING);
   EXPECT_EQ(ts1->own_role, TR::ROLE_STAND_ON);
   EXPECT_EQ(ts1->risk_level, TR::RISK_COLLISION);
   EXPECT_TRUE(ts1->compliant);
@@ -126,7 +126,7 @@ TEST_F(RiskNodeTest, NonCompliantGiveWayTargetIsFlaggedWhenRiskBecomesUrgent) {
   EXPECT_EQ(ts1->applicable_rule, 17);
   EXPECT_NEAR(ts2->tcpa, 1250.0, 1e-6);
   EXPECT_EQ(ts2->encounter, TR::ENCOUNTER_HEAD_ON);
-  EXPECT_EQ(ts2->own_role, TR::ROLE_BOTH_GIVE_WAY);
+  EXPECT_EQ(ts2->own_role, TR::ROLE_GIVE_WAY);
   EXPECT_EQ(ts2->risk_level, TR::RISK_NONE);
   EXPECT_EQ(ra->max_risk_level, TR::RISK_COLLISION);
 

@@ -3,7 +3,7 @@
 // default, with a warning) or from `lat_deg`/`lon_deg`; sets /map_origin/lat_deg and /map_origin/lon_deg
 // and publishes it latched on /map_origin, then stays up so that late subscribers (and rosbag record)
 // get it. Parameters: asv_ros/config/map_origin.yaml.
-#include <asv_core/sim/scenario.h>
+#include <asv_core/world/scenario.h>
 #include <asv_ros/map_origin.h>
 #include <asv_ros/node_main.h>
 #include <asv_ros/params.h>

@@ -28,9 +28,10 @@
 #include <asv_core/planning/dssa/dssa.h>
 #include <asv_core/planning/ga/ga_planner.h>
 #include <asv_core/planning/plan_follower.h>
+#include <asv_core/planning/planning_cycle.h>
 #include <asv_core/risk/risk_assessment.h>
-#include <asv_core/sim/scenario.h>
 #include <asv_core/sim/simulation.h>
+#include <asv_core/world/scenario.h>
 #include <asv_planning/plugin_loader.h>
 
 namespace {
@@ -43,8 +44,9 @@ const char* kUsage =
     "\n"
     "options:\n"
     "  --scenario FILE      scenario file (format 1), required\n"
-    "  --planner NAME       own ship's planner: aco | dssa | dssa_plus | mopso | ga | none\n"
-    "                       (default: the scenario's own_ship.planner; none steers for the goal)\n"
+    "  --planner NAME       own ship's planner: aco | dssa | dssa_plus | mopso | ga | none, or any\n"
+    "                       planner plugin by its pluginlib name (my_pkg/my_planner); default: the\n"
+    "                       scenario's own_ship.planner; none steers for the goal\n"
     "  --agents NAME        planner of every target whose behaviour is planner (default: each its own)\n"
     "  --set P.KEY=VALUE    planner parameter, over the scenario's planner_params (repeatable), e.g.\n"
     "                       --set dssa_plus.preset=dssa_plus_sc\n"
@@ -257,7 +259,7 @@ struct PluginShip {
   size_t index;
   std::string planner;
   asv::PlannerMode mode;
-  pluginlib::UniquePtr<asv_planning::PlannerPlugin> plugin;
+  pluginlib::UniquePtr<asv::PlannerAlgorithm> plugin;
   asv::PlanFollower follower;
   asv::RiskAssessor risk;
 };
@@ -364,8 +366,9 @@ void BatchRun::addPluginShips(asv_planning::PluginLoader& loader) {
     fc.seed = static_cast<int>(seed_);
     fc.cruise_speed = vs[i].cruise_speed;
     fc.min_separation = sc_.min_separation;
-    const asv::PlannerMode mode = asv::plannerMode(sc_.planner_params.sub(p), p);
-    auto plugin = loader.load(p, sc_.planner_params.sub(p));
+    const asv::ParamMap params = sc_.planner_params.sub(asv_planning::PluginLoader::parameterName(p));
+    const asv::PlannerMode mode = asv::plannerMode(params, p);
+    auto plugin = loader.load(p, params);
     // A method that plans once does so in paper mode, unless --follower names replan_on_risk itself.
     asv::applyPlannerMode(fc, mode, plugin->plansOnce() && !o_.follower.has("replan_on_risk"));
     if (sc_.min_obstacle_clearance > 0.0)
@@ -491,28 +494,14 @@ void BatchRun::planPluginShip(PluginShip& ps, double now) {
   if (ps.index == 0)
     writeRisk(now, targets);
   ps.follower.updateOwn(v.shipState());
-  std::string why;
-  if (ps.follower.replanNeeded(now, targets, why)) {
-    const asv::PlanningProblem pr = ps.follower.buildProblem(now, targets);
-    const auto t0 = std::chrono::steady_clock::now();
-    asv::Plan plan;
-    try {
-      plan =
-          asv::planInMode([&](const asv::PlanningProblem& p) { return ps.plugin->makePlan(p); }, pr, ps.mode);
-    } catch (const std::exception& e) {
-      plan = ps.follower.fallback(targets, std::string("plugin error: ") + e.what());
-    }
-    plan.compute_time = wallSeconds(t0);
-    if (ps.index == 0) {
-      rec_.addPlanTime(plan.compute_time);
-      writePlan(now, why, plan);
-    }
-    ps.follower.acceptPlan(plan, now, targets, why);
+  const asv::CycleResult r = asv::planningCycle(ps.follower, *ps.plugin, ps.mode, now, targets);
+  if (r.replanned && ps.index == 0) {
+    rec_.addPlanTime(r.proposed.compute_time);
+    writePlan(now, r.why, r.proposed);
   }
-  double course = 0.0, speed = 0.0;
-  if (ps.follower.setpoint(course, speed)) {
-    sim_.setSetpoint(v.name, course, speed);
-    rec_.addSetpoint(now, v.name, course);
+  if (r.has_setpoint) {
+    sim_.setSetpoint(v.name, r.course, r.speed);
+    rec_.addSetpoint(now, v.name, r.course);
   }
 }
 
@@ -625,22 +614,6 @@ int main(int argc, char** argv) {
   std::string planner = o.planner_given ? o.planner : sc.own.planner;
   if (planner.empty())
     planner = "none";
-  const auto& known = asv::knownPlanners();
-  auto checkPlanner = [&](const std::string& p, const std::string& who) {
-    if (p == "none" || std::find(known.begin(), known.end(), p) != known.end())
-      return true;
-    std::string list;
-    for (const auto& k : known)
-      list += (list.empty() ? "" : ", ") + k;
-    std::cerr << "asv_batch: unknown planner '" << p << "' for " << who << " (known: " << list << ", none)\n";
-    return false;
-  };
-  if (!checkPlanner(planner, "the own ship"))
-    return 2;
-  for (const auto& t : sc.targets)
-    if (t.behaviour == asv::Behaviour::Planner && !t.planner.empty() && !checkPlanner(t.planner, t.name))
-      return 2;
-
   std::unique_ptr<asv_planning::PluginLoader> loader;
   try {
     loader = std::make_unique<asv_planning::PluginLoader>();
@@ -649,6 +622,24 @@ int main(int argc, char** argv) {
               << "\n";
     return 2;
   }
+  // Any planner pluginlib knows runs: ours by short name, another package's by its pluginlib name.
+  const std::vector<std::string> declared = loader->declared();
+  auto checkPlanner = [&](const std::string& p, const std::string& who) {
+    const std::string full = asv_planning::PluginLoader::fullName(p);
+    if (p == "none" || std::find(declared.begin(), declared.end(), full) != declared.end())
+      return true;
+    std::string list;
+    for (const auto& d : declared)
+      list += (list.empty() ? "" : ", ") + d;
+    std::cerr << "asv_batch: unknown planner '" << p << "' for " << who << " (declared: " << list
+              << ", none)\n";
+    return false;
+  };
+  if (!checkPlanner(planner, "the own ship"))
+    return 2;
+  for (const auto& t : sc.targets)
+    if (t.behaviour == asv::Behaviour::Planner && !t.planner.empty() && !checkPlanner(t.planner, t.name))
+      return 2;
 
   std::ofstream json_file;
   std::ostream* out = &std::cout;

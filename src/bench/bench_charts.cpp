@@ -10,7 +10,7 @@
 #include "asv_core/planning/ga/ga_planner.h"
 #include "asv_core/planning/land_route.h"
 #include "asv_core/planning/mopso/mopso_planner.h"
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace {
 

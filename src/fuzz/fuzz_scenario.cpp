@@ -2,10 +2,11 @@
 // scripts/fuzz_smoke.sh builds and runs it (seeded with the asv_bringup/scenarios/*.yaml files under
 // 2.5 KB), or by hand from the repository root:
 //
-//   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -I src/include -I /usr/include/eigen3
-//   src/fuzz/fuzz_scenario.cpp src/lib/sim/scenario.cpp src/lib/common/geodesy.cpp
-//   src/lib/common/param_map.cpp src/lib/risk/domain.cpp -lyaml-cpp -lGeographicLib -o fuzz_scenario mkdir -p
-//   corpus && cp asv_bringup/scenarios/*.yaml corpus/
+//   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -I src/include \
+//     -I /usr/include/eigen3 src/fuzz/fuzz_scenario.cpp src/lib/world/scenario.cpp \
+//     src/lib/world/obstacles.cpp src/lib/common/geodesy.cpp src/lib/common/param_map.cpp \
+//     src/lib/common/geometry.cpp src/lib/risk/domain.cpp -lyaml-cpp -lGeographicLib -o fuzz_scenario
+//   mkdir -p corpus && cp asv_bringup/scenarios/*.yaml corpus/
 //   ./fuzz_scenario corpus -dict=src/fuzz/scenario.dict -max_total_time=20
 //
 // Contract checked: any input either yields a Scenario or throws asv::ScenarioError with a message, as
@@ -21,7 +22,7 @@
 #include <string>
 
 #include "asv_core/common/geodesy.h"
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace {
 
@@ -48,8 +49,7 @@ void checkShip(const asv::ScenarioShip& s, bool own) {
     check(finite(w));
   check(own || s.behaviour != asv::Behaviour::Waypoints || !s.waypoints.empty());
   check(own || s.behaviour == asv::Behaviour::Waypoints || s.waypoints.empty());
-  const auto& known = asv::knownPlanners();
-  check(s.planner.empty() || std::find(known.begin(), known.end(), s.planner) != known.end());
+  check(s.planner.empty() || asv::validPlannerName(s.planner));
 }
 
 void checkScenario(const asv::Scenario& s) {

@@ -13,7 +13,7 @@
 #include <ogrsf_frmts.h>
 
 #include "asv_core/charts/charts.h"
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace {
 

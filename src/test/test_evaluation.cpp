@@ -117,7 +117,7 @@ TEST(Evaluation, CleanEarlyStarboardGiveWayScoresFull) {
   ASSERT_EQ(r.own.targets.size(), 1u);
   const TargetResult& t = r.own.targets[0];
   EXPECT_EQ(t.encounter, Encounter::CrossingGiveWay);
-  EXPECT_STREQ(roleName(t.role), "give_way");
+  EXPECT_STREQ(toString(t.role), "give_way");
   EXPECT_TRUE(t.evaluated);
   EXPECT_NEAR(t.tcpa_at_start, 1000.0, 1e-9);
   EXPECT_NEAR(t.dcpa_at_start, 0.0, 1e-6);
@@ -143,7 +143,7 @@ TEST(Evaluation, PortTurnInHeadOnGetsTheRule14Penalty) {
   const RunResult r = record(s).finish();
   const TargetResult& t = r.own.targets.at(0);
   EXPECT_EQ(t.encounter, Encounter::HeadOn);
-  EXPECT_STREQ(encounterName(t.encounter), "head_on");
+  EXPECT_STREQ(toString(t.encounter), "head_on");
   EXPECT_FALSE(t.colregs_ok);
   EXPECT_TRUE(hasNote(t, "rule 14"));
   EXPECT_FALSE(hasNote(t, "rule 8"));
@@ -222,7 +222,7 @@ TEST(Evaluation, StandOnShipThatTurnsEarlyGetsTheRule17Penalty) {
   const RunResult r = record(s).finish();
   const TargetResult& t = r.own.targets.at(0);
   EXPECT_EQ(t.encounter, Encounter::CrossingStandOn);
-  EXPECT_STREQ(roleName(t.role), "stand_on");
+  EXPECT_STREQ(toString(t.role), "stand_on");
   EXPECT_TRUE(hasNote(t, "rule 17"));
   EXPECT_NEAR(t.score, 0.5, 1e-12);
 }

@@ -4,7 +4,10 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "asv_core/codec/line_framer.h"
 #include "asv_core/codec/nmea.h"
 
 using namespace asv::nmea;
@@ -81,6 +84,37 @@ TEST(NmeaFraming, ChecksumErrors) {
   ASSERT_EQ(parseSentence("$GPGLL,4916.45,N,12311.12,W,225444,A", s, lenient), Reject::kNone);
   EXPECT_FALSE(s.has_checksum);
   EXPECT_EQ(s.field(1), "4916.45");
+}
+
+// The framer of every NMEA node: valid sentences pass on, the rest is counted by reason. Checksums by
+// hand (XOR of the characters between ! and *): "AIVDM,1,1,,B,177KQJ5000G?tO`K>RA1wUbN0TKH,0" is 5C,
+// "AIVDM,1,1,,A,15M67FC000G?ufbE`FepT@3n00Sa,0" is 5F (sent here with 5E, a one-bit error).
+TEST(NmeaLineFramer, PassesValidSentencesAndCountsTheRestByReason) {
+  const std::string good1 = "!AIVDM,1,1,,B,177KQJ5000G?tO`K>RA1wUbN0TKH,0*5C";
+  const std::string good2 = "!AIVDM,1,1,,A,15M67FC000G?ufbE`FepT@3n00Sa,0*5F";
+  const std::string bad = "!AIVDM,1,1,,A,15M67FC000G?ufbE`FepT@3n00Sa,0*5E";
+  LineFramer framer;
+  std::vector<std::string> passed;
+  const auto keep = [&](const Sentence& s) { passed.emplace_back(s.field(5)); };
+  framer.frame("noise " + good1 + good2, keep);  // two glued sentences after line noise
+  framer.frame(good1 + " " + bad, keep);         // the broken one at the end costs nothing before it
+  framer.frame("no sentence in this line", keep);
+  framer.frame("   ", keep);  // blank (terminators are stripped before): neither sentence nor garbage
+  ASSERT_EQ(passed.size(), 3u);
+  EXPECT_EQ(passed[0], "177KQJ5000G?tO`K>RA1wUbN0TKH");
+  EXPECT_EQ(passed[1], "15M67FC000G?ufbE`FepT@3n00Sa");
+  EXPECT_EQ(passed[2], "177KQJ5000G?tO`K>RA1wUbN0TKH");
+  EXPECT_EQ(framer.sentences(), 3u);
+  EXPECT_EQ(framer.garbage(), 2u);  // "noise " and the line without a sentence
+  EXPECT_EQ(framer.rejected(Reject::kBadChecksum), 1u);
+  EXPECT_EQ(framer.checksumFailures(), 1u);
+  EXPECT_EQ(framer.totalRejected(), 3u);
+  const auto counters = framer.counters();
+  ASSERT_EQ(counters.size(), 4u);  // the three totals and the one reason seen
+  EXPECT_EQ(counters[0], std::make_pair(std::string("sentences framed"), uint64_t{3}));
+  EXPECT_EQ(counters[2], std::make_pair(std::string("garbage lines"), uint64_t{2}));
+  EXPECT_EQ(counters[3].first, std::string("framing rejected: ") + rejectText(Reject::kBadChecksum));
+  EXPECT_EQ(counters[3].second, 1u);
 }
 
 TEST(NmeaFraming, LineTerminatorsAndWhitespace) {

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "asv_core/sim/scenario.h"
+#include "asv_core/common/units.h"
+#include "asv_core/world/scenario.h"
 
 using namespace asv;
 
@@ -108,7 +109,12 @@ TEST(Scenario, UnitMistakesAreCaught) {
   expectError(replace(kGood, "speed_kn: 10.4\n  goal", "speed_kn: 104\n  goal"), "must be in [0, 60] kn");
   expectError(replace(kGood, "range_nm: 7.9", "range_nm: 14630"), "metres given as miles?");
   expectError(replace(kGood, "course_deg: 66", "course_deg: 400"), "[0, 360) deg");
-  expectError(replace(kGood, "planner: aco", "planner: astar"), "unknown planner");
+  // Any plugin may be named (pluginlib says at load time which exist); a malformed name is refused.
+  EXPECT_EQ(parseScenario(replace(kGood, "planner: aco", "planner: my_pkg/astar")).own.planner,
+            "my_pkg/astar");
+  expectError(replace(kGood, "planner: aco", "planner: A*"), "not a planner name");
+  expectError(replace(kGood, "planner: aco", "planner: my_pkg/"), "not a planner name");
+  expectError(replace(kGood, "planner: aco", "planner: a/b/c"), "not a planner name");
 }
 
 TEST(Scenario, GoalRadiusNeedsAGoalAndAPositiveValue) {

@@ -8,7 +8,7 @@
 
 #include "asv_core/common/units.h"
 #include "asv_core/sim/scenario_gen.h"
-#include "asv_core/sim/scenario_write.h"
+#include "asv_core/world/scenario_write.h"
 
 using namespace asv;
 
@@ -58,7 +58,7 @@ TEST(ScenarioGen, SingleTargetEncountersAreWhereTheClassSays) {
   for (uint64_t i = 0; i < 12; ++i) {
     for (SituationClass c :
          {SituationClass::HeadOn, SituationClass::CrossingGiveWay, SituationClass::CrossingStandOn,
-          SituationClass::Overtaking, SituationClass::Overtaken}) {
+          SituationClass::Overtaking, SituationClass::BeingOvertaken}) {
       const Scenario s = generateScenario(kCfg, c, 5, i).scenario;
       ASSERT_EQ(s.targets.size(), 1u);
       const ScenarioShip& t = s.targets[0];

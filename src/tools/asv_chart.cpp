@@ -9,7 +9,7 @@
 #include <string>
 
 #include "asv_core/charts/charts.h"
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 #include "tool_main.h"
 
 namespace {

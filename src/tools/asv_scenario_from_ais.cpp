@@ -7,8 +7,8 @@
 
 #include "asv_core/common/geometry.h"
 #include "asv_core/sim/scenario_from_ais.h"
-#include "asv_core/sim/scenario_write.h"
 #include "asv_core/sim/simulation.h"
+#include "asv_core/world/scenario_write.h"
 #include "tool_main.h"
 
 namespace {

@@ -50,7 +50,7 @@ const char* const kClassHelp =
     "crossing_give_way  one ship crossing from starboard; the own ship gives way (Rules 15, 16)\n"
     "crossing_stand_on  one ship crossing from port gives way; the own ship stands on (Rule 17)\n"
     "overtaking         the own ship overtakes a slower ship (Rule 13)\n"
-    "overtaken          a faster ship overtakes the own ship and keeps out of the way (Rules 13, 17)\n"
+    "being_overtaken    a faster ship overtakes the own ship and keeps out of the way (Rules 13, 17)\n"
     "rule_breaker       one ship that should give way stands on or turns to port (Rules 2, 17)\n"
     "multi              2-5 ships of any encounter, CPAs at independent times, 20 % rule-breakers\n"
     "converging         2-5 ships whose CPAs fall within 3 minutes of each other, 20 % rule-breakers\n"

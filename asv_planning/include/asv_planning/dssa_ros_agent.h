@@ -58,7 +58,7 @@
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 
-#include "asv_planning/planner_plugin.h"
+#include <asv_core/planning/planning.h>
 
 namespace asv_planning {
 
@@ -105,7 +105,7 @@ public:
   static bool wanted(const std::string& planner, bool distributed);
   // The DssaConfig of a loaded dssa / dssa_plus plugin: its sea-scale defaults, the scenario's
   // planner_params and ~<planner>/ merged and validated. Throws std::invalid_argument for other plugins.
-  static asv::DssaConfig configOf(const PlannerPlugin& plugin);
+  static asv::DssaConfig configOf(const asv::PlannerAlgorithm& plugin);
   // DssaIntention.id of a ship name: 31-bit FNV-1a, the same on every machine.
   static int shipId(const std::string& name);
 

@@ -8,7 +8,9 @@
 //   plan_markers (visualization_msgs/MarkerArray), domains (MarkerArray: the planner's domain round each
 //   target of its problem), alarms (asv_msgs/Alarm, latched: its inputs lost and
 //   the degraded action), /diagnostics
-// Parameters: config/planner_node.yaml; the plugin's own under ~<planner>/ (config/<planner>.yaml).
+// Parameters: config/planner_node.yaml; the planner's own under ~<planner>/ (each algorithm's keys are its
+//   config struct's, asv_core/planning/<planner>/, defaults in its constructor; config/dssa.yaml shows
+//   DSSA's).
 //   Live (dynamic_reconfigure, cfg/Planner.cfg): planner, mode, min_separation, replan_period,
 //   min_replan_interval, time_budget, stand_on_policy.
 #pragma once
@@ -22,6 +24,7 @@
 #include <asv_core/planning/plan_follower.h>
 #include <asv_core/planning/planner_node_config.h>
 #include <asv_core/planning/planning.h>
+#include <asv_core/planning/planning_cycle.h>
 #include <asv_msgs/AidToNavigationArray.h>
 #include <asv_msgs/Alarm.h>
 #include <asv_msgs/RiskAssessment.h>
@@ -69,23 +72,26 @@ private:
   void alarmCallback(const asv_msgs::Alarm::ConstPtr& msg);
   // Degraded operation while `lost` is not empty (PlanFollower::degrade), else back to planning.
   void degrade(const std::vector<asv::StaleInput>& lost);
-  void replan(const std::string& why, const std::vector<asv::PlannerTarget>& targets);
+  // The planning cycle (asv_core/planning/planning_cycle.h) with the picture `targets`: logs, counts and
+  // publishes a new plan; returns the set-point to steer, if any.
+  asv::CycleResult plan(const std::vector<asv::PlannerTarget>& targets);
   void publishPlan();
   void publishSetpoint();
+  void publishSetpoint(double course, double speed);
   void publishDomains(const std::vector<asv::PlannerTarget>& targets);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
   // dynamic_reconfigure: applies a change of the live parameters as a whole, or refuses it (ERROR on
   // screen, the values in force shown again); the first call shows the values in force.
   void reconfigure(PlannerConfig& config, uint32_t level);
   PlannerConfig liveConfig() const;
-  pluginlib::UniquePtr<PlannerPlugin> loadPlugin(const std::string& planner, const std::string& mode);
+  pluginlib::UniquePtr<asv::PlannerAlgorithm> loadPlugin(const std::string& planner, const std::string& mode);
   // Drops the own ship, the inputs and the plan when the clock has gone backwards (a looping bag).
   void checkClock();
 
   ros::NodeHandle nh_, pnh_;
   asv::PlannerNodeConfig params_;  // follower: as loaded (the plan follower gets followerConfig())
   PluginLoader loader_;
-  pluginlib::UniquePtr<PlannerPlugin> plugin_;
+  pluginlib::UniquePtr<asv::PlannerAlgorithm> plugin_;
   std::vector<asv::StaticObstacle> obstacles_;      // the scenario's (land, structures)
   std::vector<asv::StaticObstacle> aid_obstacles_;  // one per aid to navigation
   ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_, aids_sub_;

@@ -62,7 +62,7 @@ private:
   AisNodeParams params_;
   asv_ros::MapOrigin map_origin_;
   asv::LocalFrame frame_;
-  LineFramer framer_;
+  asv::nmea::LineFramer framer_;
   asv::ais::Decoder decoder_;
   asv::ais::Message message_;
   asv::ais::StaticStore store_;

@@ -77,7 +77,7 @@ private:
   ArpaNodeParams params_;
   asv_ros::MapOrigin map_origin_;
   asv::LocalFrame frame_;
-  LineFramer framer_;
+  asv::nmea::LineFramer framer_;
   asv::ArpaTargetTable table_;
   ros::Subscriber odom_sub_;
   ros::Publisher targets_pub_;

@@ -23,6 +23,7 @@
 
 #include <asv_ros/lockstep.h>
 
+#include <asv_core/codec/line_framer.h>
 #include <asv_core/codec/nmea.h>
 #include <asv_msgs/NmeaSentence.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -66,27 +67,8 @@ struct NmeaInputParams {
 // the node's own defaults. std::invalid_argument naming a bad value.
 NmeaInputParams inputFromParams(const asv::ParamMap& params, NmeaInputParams defaults);
 
-// Splits a line into sentences (resynchronising after garbage or a broken sentence at the next
-// `$`/`!`) and counts every rejection by reason.
-class LineFramer {
-public:
-  explicit LineFramer(const asv::nmea::FramerConfig& config = {}) : config_(config) {}
-  // Calls `on_sentence` for each valid sentence of `line`.
-  void frame(std::string_view line, const std::function<void(const asv::nmea::Sentence&)>& on_sentence);
-
-  std::uint64_t sentences() const { return sentences_; }
-  std::uint64_t garbage() const { return garbage_; }
-  std::uint64_t rejected(asv::nmea::Reject r) const { return rejects_[static_cast<std::size_t>(r)]; }
-  std::uint64_t checksumFailures() const;  // missing, malformed or wrong sentence/tag-block checksums
-  std::uint64_t totalRejected() const;
-  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) const;
-
-private:
-  asv::nmea::FramerConfig config_;
-  asv::nmea::Sentence sentence_;
-  std::uint64_t sentences_ = 0, garbage_ = 0;
-  std::uint64_t rejects_[static_cast<std::size_t>(asv::nmea::Reject::kCount)] = {};
-};
+// Adds a framer's counters (asv::nmea::LineFramer::counters) to a node's diagnostics.
+void addFramerStats(const asv::nmea::LineFramer& framer, diagnostic_updater::DiagnosticStatusWrapper& stat);
 
 struct NmeaInputStats {
   std::uint64_t lines = 0;         // lines handed to the node

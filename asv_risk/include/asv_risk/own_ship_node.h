@@ -59,7 +59,7 @@ private:
   asv_ros::MapOrigin map_origin_;
   asv::LocalFrame frame_;
   asv::OwnShipEstimator estimator_;
-  LineFramer framer_;
+  asv::nmea::LineFramer framer_;
   asv::ais::Decoder decoder_;
   asv::ais::Message message_;
   ros::Publisher odom_pub_;

@@ -17,6 +17,7 @@
 #include <asv_msgs/RiskAssessment.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/alarm.h>
+#include <asv_ros/conversions.h>
 #include <asv_ros/frames.h>
 #include <asv_ros/lockstep.h>
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -26,9 +27,9 @@
 #include <tf2/LinearMath/Transform.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "asv_risk/conversions.h"
-
 namespace asv_risk {
+
+using asv_ros::Reject;  // the input checks of asv_ros/conversions.h, counted by reason
 
 // The node's parameters (asv::RiskNodeConfig, config/risk_node.yaml) from the private node handle;
 // throws std::invalid_argument naming the parameter when a value is invalid or unknown.

@@ -16,7 +16,7 @@
 #include <asv_core/common/clock_jump.h>
 #include <asv_core/eval/evaluation.h>
 #include <asv_core/eval/evaluator_node_config.h>
-#include <asv_core/sim/scenario.h>
+#include <asv_core/world/scenario.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/Plan.h>
 #include <asv_msgs/SimEvent.h>

@@ -22,6 +22,7 @@
 #include <asv_core/sim/simulation.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <asv_msgs/LockstepAck.h>
+#include <asv_msgs/Target.h>
 #include <asv_ros/alarm.h>
 #include <asv_ros/map_origin.h>
 #include <asv_ros/nmea_output.h>
@@ -32,6 +33,9 @@
 #include <visualization_msgs/MarkerArray.h>
 
 namespace asv_sim {
+
+// Stamps are sim time on a fixed epoch, so that two runs of the same scenario record the same stamps.
+constexpr double kEpoch = 1.0e9;  // [s] ROS time of simulation time 0
 
 // sim_node's parameters: its own (asv::SimNodeConfig, config/sim_node.yaml) and the global lockstep
 // ones (/lockstep: the simulation advances a step only when every participant has done that step's
@@ -76,6 +80,9 @@ private:
   void lockstepAckCallback(const asv_msgs::LockstepAck::ConstPtr& msg);
   bool waitFor(const std::function<bool()>& done, const char* what);
   void publishState(bool odom, bool ships);
+  // sim_node_markers.cpp: the rviz markers.
+  void addShipMarkers(size_t i, const asv_msgs::Target& t, double yaw, const ros::Time& stamp,
+                      visualization_msgs::MarkerArray& markers);
   void addTrail(size_t i, const visualization_msgs::Marker& ship, visualization_msgs::MarkerArray& arr);
   // sim/summary: each target's closest approach to the own ship so far, the own ship's manoeuvres, and
   // the simulated time and rate at the scene box's top-left corner (the recording's last frame).

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "asv_core/common/units.h"
+
 // GCC 12 warns inside Boost's round buffer join (a point it fills by reference): not our code.
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
@@ -14,6 +16,15 @@
 #endif
 
 namespace asv {
+
+Polygon regularPolygon(const Eigen::Vector2d& centre, double r, int sides, double first) {
+  Polygon poly;
+  for (int k = 0; k < sides; ++k) {
+    const double a = first + 2.0 * kPi * k / sides;
+    poly.push_back(centre + r * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  return poly;
+}
 
 bool pointInPolygon(const Polygon& poly, const Eigen::Vector2d& p) {
   const size_t n = poly.size();

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "asv_core/common/format.h"
 #include "asv_core/risk/cpa.h"
 
 namespace asv {
@@ -20,250 +21,6 @@ void require(bool ok, const std::string& what) {
     throw std::invalid_argument("evaluation: " + what);
 }
 
-std::string fmt(const char* f, double a) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
-}
-std::string fmt(const char* f, double a, double b) {
-  char buf[192];
-  std::snprintf(buf, sizeof buf, f, a, b);
-  return buf;
-}
-std::string fmt(const char* f, double a, double b, double c) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
-  return buf;
-}
-std::string fmt(const char* f, double a, double b, double c, double d) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, a, b, c, d);
-  return buf;
-}
-
-// ---- a minimal ordered JSON tree ------------------------------------------------------------------
-
-struct Json {
-  enum Kind { Null, Bool, Num, Int, Str, Arr, Obj } kind = Null;
-  double num = 0.0;
-  int prec = 3;
-  long long i = 0;
-  bool b = false;
-  std::string s;
-  std::vector<std::pair<std::string, Json>> obj;
-  std::vector<Json> arr;
-
-  static Json number(double v, int prec) {
-    Json j;
-    if (!std::isfinite(v))
-      return j;  // null: NaN and inf are never printed
-    j.kind = Num;
-    j.num = v;
-    j.prec = prec;
-    return j;
-  }
-  static Json integer(long long v) {
-    Json j;
-    j.kind = Int;
-    j.i = v;
-    return j;
-  }
-  static Json boolean(bool v) {
-    Json j;
-    j.kind = Bool;
-    j.b = v;
-    return j;
-  }
-  static Json string(const std::string& v) {
-    Json j;
-    j.kind = Str;
-    j.s = v;
-    return j;
-  }
-  static Json object() {
-    Json j;
-    j.kind = Obj;
-    return j;
-  }
-  static Json array() {
-    Json j;
-    j.kind = Arr;
-    return j;
-  }
-  Json& add(const std::string& key, Json v) {
-    obj.emplace_back(key, std::move(v));
-    return *this;
-  }
-};
-
-std::string quote(const std::string& s) {
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      default:
-        if (c < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += static_cast<char>(c);
-        }
-    }
-  }
-  return out + "\"";
-}
-
-std::string numberText(double v, int prec) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", prec, v);
-  std::string s = buf;
-  // "-0.000" is 0: the sign of a zero must not make two equal runs differ.
-  if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos)
-    s.erase(0, 1);
-  return s;
-}
-
-bool scalar(const Json& j) {
-  return j.kind != Json::Arr && j.kind != Json::Obj;
-}
-
-void write(const Json& j, bool pretty, int indent, std::string& out) {
-  const std::string pad = pretty ? std::string(2 * (indent + 1), ' ') : "";
-  const std::string end_pad = pretty ? std::string(2 * indent, ' ') : "";
-  switch (j.kind) {
-    case Json::Null:
-      out += "null";
-      return;
-    case Json::Bool:
-      out += j.b ? "true" : "false";
-      return;
-    case Json::Num:
-      out += numberText(j.num, j.prec);
-      return;
-    case Json::Int:
-      out += std::to_string(j.i);
-      return;
-    case Json::Str:
-      out += quote(j.s);
-      return;
-    case Json::Arr: {
-      if (j.arr.empty()) {
-        out += "[]";
-        return;
-      }
-      const bool flat = !pretty || std::all_of(j.arr.begin(), j.arr.end(), scalar);
-      out += "[";
-      for (size_t k = 0; k < j.arr.size(); ++k) {
-        if (k)
-          out += ",";
-        if (flat) {
-          if (k)
-            out += " ";
-        } else {
-          out += "\n" + pad;
-        }
-        write(j.arr[k], pretty, indent + 1, out);
-      }
-      out += flat ? "]" : "\n" + end_pad + "]";
-      return;
-    }
-    case Json::Obj: {
-      if (j.obj.empty()) {
-        out += "{}";
-        return;
-      }
-      // Inside an array, small objects (manoeuvres) stay on one line even when pretty.
-      const bool small = j.obj.size() <= 3 && std::all_of(j.obj.begin(), j.obj.end(),
-                                                          [](const auto& kv) { return scalar(kv.second); });
-      const bool flat = !pretty || small;
-      out += "{";
-      for (size_t k = 0; k < j.obj.size(); ++k) {
-        if (k)
-          out += ",";
-        if (flat) {
-          if (k)
-            out += " ";
-        } else {
-          out += "\n" + pad;
-        }
-        out += quote(j.obj[k].first) + ": ";
-        write(j.obj[k].second, pretty, indent + 1, out);
-      }
-      out += flat ? "}" : "\n" + end_pad + "}";
-      return;
-    }
-  }
-}
-
-// Precisions: metres and seconds 0.1, degrees 0.1, ratios and scores 1e-4, milliseconds 1e-3,
-// latitude/longitude 1e-7 deg (1 cm).
-constexpr int kMetres = 1, kSeconds = 1, kDegrees = 1, kRatio = 4, kMs = 3, kLatLon = 7;
-
-Json latLonJson(const LocalFrame& frame, const Eigen::Vector2d& p) {
-  const GeoPoint g = frame.toGeodetic(p);
-  Json o = Json::object();
-  o.add("lat_deg", Json::number(g.lat_deg, kLatLon));
-  o.add("lon_deg", Json::number(g.lon_deg, kLatLon));
-  return o;
-}
-
-Json targetJson(const TargetResult& t, const LocalFrame& frame) {
-  Json o = Json::object();
-  o.add("name", Json::string(t.name));
-  o.add("encounter", Json::string(encounterName(t.encounter)));
-  o.add("own_role", Json::string(roleName(t.role)));
-  o.add("min_distance_m", Json::number(t.min_distance, kMetres));
-  o.add("tcpa_at_start_s", Json::number(t.tcpa_at_start, kSeconds));
-  o.add("dcpa_at_start_m", Json::number(t.dcpa_at_start, kMetres));
-  if (std::isfinite(t.closest_time)) {
-    Json c = Json::object();
-    c.add("t_s", Json::number(t.closest_time, kSeconds));
-    c.add("own", latLonJson(frame, t.own_at_closest));
-    c.add("target", latLonJson(frame, t.target_at_closest));
-    o.add("closest_approach", c);
-  }
-  o.add("colregs_ok", Json::boolean(t.colregs_ok));
-  Json notes = Json::array();
-  for (const auto& n : t.notes)
-    notes.arr.push_back(Json::string(n));
-  o.add("colregs_notes", notes);
-  o.add("colregs_score", Json::number(t.score, kRatio));
-  return o;
-}
-
-Json manoeuvresJson(const std::vector<Manoeuvre>& ms) {
-  Json a = Json::array();
-  for (const auto& m : ms) {
-    Json o = Json::object();
-    o.add("t_s", Json::number(m.time, kSeconds));
-    o.add("course_change_deg", Json::number(radToDeg(m.course_change), kDegrees));
-    a.arr.push_back(o);
-  }
-  return a;
-}
-
-Json targetsJson(const std::vector<TargetResult>& ts, const LocalFrame& frame) {
-  Json a = Json::array();
-  for (const auto& t : ts)
-    a.arr.push_back(targetJson(t, frame));
-  return a;
-}
-
 double sideOf(const Eigen::Vector2d& u, const Eigen::Vector2d& rel) {
   return u.x() * rel.y() - u.y() * rel.x();
 }
@@ -271,36 +28,6 @@ double sideOf(const Eigen::Vector2d& u, const Eigen::Vector2d& rel) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------
-
-const char* encounterName(Encounter e) {
-  switch (e) {
-    case Encounter::HeadOn:
-      return "head_on";
-    case Encounter::CrossingGiveWay:
-    case Encounter::CrossingStandOn:
-      return "crossing";
-    case Encounter::Overtaking:
-      return "overtaking";
-    case Encounter::BeingOvertaken:
-      return "being_overtaken";
-    case Encounter::None:
-      break;
-  }
-  return "none";
-}
-
-const char* roleName(OwnRole r) {
-  switch (r) {
-    case OwnRole::GiveWay:
-    case OwnRole::BothGiveWay:
-      return "give_way";
-    case OwnRole::StandOn:
-      return "stand_on";
-    case OwnRole::None:
-      break;
-  }
-  return "none";
-}
 
 void EvaluationConfig::validate() const {
   auto pos = [](double v) { return std::isfinite(v) && v > 0.0; };
@@ -665,8 +392,8 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
   if (apparent < 1.0)
     penalise(r, factor, cfg_.penalty_rule8 * (1.0 - apparent),
              std::string("rule 8: ") + p.side +
-                 fmt(" turn %.0f deg (speed -%.0f %%) < %.0f deg apparent", p.alter_deg, 100.0 * p.speed_drop,
-                     cfg_.apparent_course_deg));
+                 strFormat(" turn %.0f deg (speed -%.0f %%) < %.0f deg apparent", p.alter_deg,
+                           100.0 * p.speed_drop, cfg_.apparent_course_deg));
   // Rule 16: early.
   if (p.ka == both.size()) {
     penalise(r, factor, cfg_.penalty_late, "rule 16: the give-way ship took no action");
@@ -675,21 +402,22 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
     const double range = p.cpas[kb].range, tcpa = p.cpas[kb].tcpa;
     const double early = std::max(range / cfg_.early_range_m, tcpa / cfg_.early_tcpa_s);
     if (early < 1.0)
-      penalise(r, factor, cfg_.penalty_late * (1.0 - early),
-               fmt("rule 16: first action at t=%.0f s, %.0f m and %.0f s from CPA: late (early: %.0f m or ",
-                   both[p.ka].first->t, range, tcpa, cfg_.early_range_m) +
-                   fmt("%.0f s)", cfg_.early_tcpa_s));
+      penalise(
+          r, factor, cfg_.penalty_late * (1.0 - early),
+          strFormat("rule 16: first action at t=%.0f s, %.0f m and %.0f s from CPA: late (early: %.0f m or ",
+                    both[p.ka].first->t, range, tcpa, cfg_.early_range_m) +
+              strFormat("%.0f s)", cfg_.early_tcpa_s));
   }
   // Rules 14 and 15: starboard.
   if (p.port_dominant && p.g.encounter == Encounter::HeadOn)
-    penalise(
-        r, factor, cfg_.penalty_port,
-        fmt("rule 14: turned %.0f deg to port in a head-on encounter", radToDeg(p.max_port)) + forcedNote(p));
+    penalise(r, factor, cfg_.penalty_port,
+             strFormat("rule 14: turned %.0f deg to port in a head-on encounter", radToDeg(p.max_port)) +
+                 forcedNote(p));
   if (p.port_dominant && p.g.encounter == Encounter::CrossingGiveWay)
-    penalise(
-        r, factor, cfg_.penalty_port,
-        fmt("rule 15: turned %.0f deg to port for a ship crossing from starboard", radToDeg(p.max_port)) +
-            forcedNote(p));
+    penalise(r, factor, cfg_.penalty_port,
+             strFormat("rule 15: turned %.0f deg to port for a ship crossing from starboard",
+                       radToDeg(p.max_port)) +
+                 forcedNote(p));
   if (p.g.encounter != Encounter::CrossingGiveWay)
     return;
   // Rule 15: not across the stand-on ship's bow. The first time the own ship crosses the target's
@@ -706,8 +434,8 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
       continue;
     if (u1.dot(rel1) > 0.0 && rel1.norm() < cfg_.cross_ahead_range_m)
       penalise(r, factor, cfg_.penalty_ahead,
-               fmt("rule 15: crossed %.0f m ahead of the stand-on ship at t=%.0f s", rel1.norm(),
-                   both[k].first->t));
+               strFormat("rule 15: crossed %.0f m ahead of the stand-on ship at t=%.0f s", rel1.norm(),
+                         both[k].first->t));
     break;
   }
 }
@@ -737,14 +465,14 @@ std::string RunRecorder::starboardClosed(const Passage& p) const {
     const double t = std::clamp(c.tcpa, 0.0, hold);
     const double d = ((own.s.position + v * t) - (at->s.position + at->s.velocity() * t)).norm();
     if (d < r_min_)
-      return fmt("%.0f deg to starboard would have passed ", turn) + info_.ships[k].name +
-             fmt(" at %.0f m", d);
+      return strFormat("%.0f deg to starboard would have passed ", turn) + info_.ships[k].name +
+             strFormat(" at %.0f m", d);
   }
   const Eigen::Vector2d end = own.s.position + v * hold;
   for (const StaticObstacle& o : info_.obstacles) {
     const double d = obstacleDistance(o, own.s.position, end);
     if (d < r_nm_)
-      return fmt("%.0f deg to starboard would have come within %.0f m of ", turn, d) + o.name;
+      return strFormat("%.0f deg to starboard would have come within %.0f m of ", turn, d) + o.name;
   }
   return "";
 }
@@ -774,24 +502,27 @@ void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor
     return d.target != r.name && d.from <= t_action && t_action <= d.to;
   });
   if (early && duty != duties.end()) {
-    r.notes.push_back(fmt("rule 17 not applied: the stand-on ship altered at t=%.0f s while keeping out of "
-                          "the way of ",
-                          both[p.ka].first->t) +
-                      duty->target + fmt(" (its passage t=%.0f-%.0f s)", duty->from, duty->to));
+    r.notes.push_back(
+        strFormat("rule 17 not applied: the stand-on ship altered at t=%.0f s while keeping out of "
+                  "the way of ",
+                  both[p.ka].first->t) +
+        duty->target + strFormat(" (its passage t=%.0f-%.0f s)", duty->from, duty->to));
   } else if (early) {
-    const std::string urgent =
-        ku < both.size() ? fmt("urgent only at t=%.0f s", both[ku].first->t) : std::string("never urgent");
-    penalise(r, factor, cfg_.penalty_stand_on,
-             fmt("rule 17: the stand-on ship altered (%.0f deg, speed -%.0f %%) at t=%.0f s, before the "
-                 "give-way ship's action was clearly lacking (",
-                 p.alter_deg, 100.0 * p.speed_drop, both[p.ka].first->t) +
-                 urgent + ")");
+    const std::string urgent = ku < both.size() ? strFormat("urgent only at t=%.0f s", both[ku].first->t)
+                                                : std::string("never urgent");
+    penalise(
+        r, factor, cfg_.penalty_stand_on,
+        strFormat("rule 17: the stand-on ship altered (%.0f deg, speed -%.0f %%) at t=%.0f s, before the "
+                  "give-way ship's action was clearly lacking (",
+                  p.alter_deg, 100.0 * p.speed_drop, both[p.ka].first->t) +
+            urgent + ")");
     return;
   }
   if (p.ka < both.size() && p.port_dominant && p.g.encounter == Encounter::CrossingStandOn)
-    penalise(r, factor, cfg_.penalty_port,
-             fmt("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(p.max_port)) +
-                 forcedNote(p));
+    penalise(
+        r, factor, cfg_.penalty_port,
+        strFormat("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(p.max_port)) +
+            forcedNote(p));
 }
 
 void RunRecorder::finishScore(TargetResult& r, double factor) const {
@@ -800,7 +531,7 @@ void RunRecorder::finishScore(TargetResult& r, double factor) const {
     r.notes.push_back("collision");
     r.colregs_ok = false;
   } else if (std::isfinite(r.min_distance) && r.min_distance < r_min_) {
-    r.notes.push_back(fmt("closest approach %.0f m < minimum %.0f m", r.min_distance, r_min_));
+    r.notes.push_back(strFormat("closest approach %.0f m < minimum %.0f m", r.min_distance, r_min_));
   }
 }
 
@@ -967,207 +698,6 @@ RunResult RunRecorder::finish() const {
       if (i == 0 || !info_.ships[i].planner.empty())
         r.ships.push_back(i == 0 ? r.own : evaluateShip(i));
   return r;
-}
-
-// ---------------------------------------------------------------------------------------------------
-
-void zeroWallClock(RunResult& r) {
-  r.wall_time = 0.0;
-  if (r.plan_time.count > 0)
-    r.plan_time.median_ms = r.plan_time.max_ms = 0.0;
-}
-
-std::string toJson(const RunResult& r, bool pretty) {
-  const LocalFrame frame(r.origin.lat_deg, r.origin.lon_deg);
-  Json o = Json::object();
-  o.add("scenario", Json::string(r.scenario));
-  o.add("planner", Json::string(r.planner));
-  o.add("seed", Json::integer(static_cast<long long>(r.seed)));
-  o.add("collision", Json::boolean(r.collision));
-  o.add("collisions_between_targets", Json::integer(r.collisions_between_targets));
-  o.add("grounding", Json::boolean(r.own.grounding));
-  o.add("min_obstacle_distance_m", Json::number(r.own.min_obstacle_distance, kMetres));
-  o.add("min_separation_m", Json::number(r.own.min_separation, kMetres));
-  o.add("safety_violation", Json::boolean(r.safety_violation));
-  o.add("arrived", Json::boolean(r.own.arrived));
-  o.add("time_to_goal_s", Json::number(r.own.time_to_goal, kSeconds));
-  o.add("path_length_m", Json::number(r.own.path_length, kMetres));
-  o.add("path_ratio", Json::number(r.own.path_ratio, kRatio));
-  o.add("manoeuvres", manoeuvresJson(r.own.manoeuvres));
-  o.add("targets", targetsJson(r.own.targets, frame));
-  o.add("colregs_score", Json::number(r.own.colregs_score, kRatio));
-  Json pt = Json::object();
-  pt.add("median", Json::number(r.plan_time.median_ms, kMs));
-  pt.add("max", Json::number(r.plan_time.max_ms, kMs));
-  pt.add("count", Json::integer(r.plan_time.count));
-  o.add("plan_time_ms", pt);
-  o.add("wall_time_s", Json::number(r.wall_time, kMs));
-  if (r.multi_agent) {
-    Json ships = Json::array();
-    for (const auto& s : r.ships) {
-      Json e = Json::object();
-      e.add("name", Json::string(s.name));
-      e.add("planner", Json::string(s.planner));
-      e.add("collision", Json::boolean(s.collision));
-      e.add("grounding", Json::boolean(s.grounding));
-      e.add("min_obstacle_distance_m", Json::number(s.min_obstacle_distance, kMetres));
-      e.add("min_separation_m", Json::number(s.min_separation, kMetres));
-      e.add("arrived", Json::boolean(s.arrived));
-      e.add("time_to_goal_s", Json::number(s.time_to_goal, kSeconds));
-      e.add("path_length_m", Json::number(s.path_length, kMetres));
-      e.add("path_ratio", Json::number(s.path_ratio, kRatio));
-      e.add("manoeuvres", manoeuvresJson(s.manoeuvres));
-      e.add("targets", targetsJson(s.targets, frame));
-      e.add("colregs_score", Json::number(s.colregs_score, kRatio));
-      ships.arr.push_back(e);
-    }
-    o.add("ships", ships);
-  }
-  std::string out;
-  write(o, pretty, 0, out);
-  return out;
-}
-
-namespace {
-
-// GeoJSON pieces (RFC 7946): positions [longitude, latitude], features with a "kind" property.
-Json lonLat(const LocalFrame& frame, const Eigen::Vector2d& p) {
-  const GeoPoint g = frame.toGeodetic(p);
-  Json a = Json::array();
-  a.arr.push_back(Json::number(g.lon_deg, kLatLon));
-  a.arr.push_back(Json::number(g.lat_deg, kLatLon));
-  return a;
-}
-
-Json feature(const std::string& type, Json coordinates, Json properties) {
-  Json geometry = Json::object();
-  geometry.add("type", Json::string(type));
-  geometry.add("coordinates", std::move(coordinates));
-  Json f = Json::object();
-  f.add("type", Json::string("Feature"));
-  f.add("geometry", std::move(geometry));
-  f.add("properties", std::move(properties));
-  return f;
-}
-
-Json kind(const std::string& k) {
-  Json p = Json::object();
-  p.add("kind", Json::string(k));
-  return p;
-}
-
-Json line(const LocalFrame& frame, const std::vector<Eigen::Vector2d>& points) {
-  Json a = Json::array();
-  for (const auto& p : points)
-    a.arr.push_back(lonLat(frame, p));
-  return a;
-}
-
-// The own ship's closest approach to one target: her position (a Point) and the line to the target.
-void closestApproach(const LocalFrame& frame, const TargetResult& t, Json& features) {
-  if (!std::isfinite(t.closest_time))
-    return;
-  Json p = kind("closest_approach");
-  p.add("target", Json::string(t.name));
-  p.add("distance_m", Json::number(t.min_distance, kMetres));
-  p.add("t_s", Json::number(t.closest_time, kSeconds));
-  features.arr.push_back(feature("Point", lonLat(frame, t.own_at_closest), p));
-  Json l = kind("closest_approach_line");
-  l.add("target", Json::string(t.name));
-  l.add("distance_m", Json::number(t.min_distance, kMetres));
-  features.arr.push_back(feature("LineString", line(frame, {t.own_at_closest, t.target_at_closest}), l));
-}
-
-}  // namespace
-
-std::string RunRecorder::geoJson(const RunResult& r) const {
-  const LocalFrame frame(info_.origin.lat_deg, info_.origin.lon_deg);
-  Json features = Json::array();
-  for (const StaticObstacle& o : info_.obstacles) {
-    std::vector<Eigen::Vector2d> ring = o.polygon;
-    if (!ring.empty())
-      ring.push_back(ring.front());  // a closed ring
-    Json rings = Json::array();
-    rings.arr.push_back(line(frame, ring));
-    Json p = kind("land");
-    p.add("name", Json::string(o.name));
-    features.arr.push_back(feature("Polygon", std::move(rings), p));
-  }
-  for (size_t i = 0; i < tracks_.size(); ++i) {
-    std::vector<Eigen::Vector2d> pts;
-    for (const Point& pt : tracks_[i].points)
-      pts.push_back(pt.s.position);
-    if (pts.size() < 2)
-      continue;
-    Json p = kind("track");
-    p.add("ship", Json::string(info_.ships[i].name));
-    p.add("own", Json::boolean(i == 0));
-    features.arr.push_back(feature("LineString", line(frame, pts), p));
-  }
-  for (const TargetResult& t : r.own.targets)
-    closestApproach(frame, t, features);
-  for (const Manoeuvre& m : r.own.manoeuvres) {
-    const auto& own = tracks_[0].points;
-    const auto at =
-        std::lower_bound(own.begin(), own.end(), m.time, [](const Point& p, double t) { return p.t < t; });
-    if (at == own.end())
-      continue;
-    Json p = kind("manoeuvre");
-    p.add("t_s", Json::number(m.time, kSeconds));
-    p.add("course_change_deg", Json::number(radToDeg(m.course_change), kDegrees));
-    features.arr.push_back(feature("Point", lonLat(frame, at->s.position), p));
-  }
-  Json fc = Json::object();
-  fc.add("type", Json::string("FeatureCollection"));
-  fc.add("features", std::move(features));
-  std::string out;
-  write(fc, false, 0, out);
-  return out + "\n";
-}
-
-std::string summaryLine(const RunResult& r) {
-  std::ostringstream os;
-  os << r.scenario << " / " << r.planner << " / seed " << r.seed << ": "
-     << (r.collision ? "COLLISION" : "no collision");
-  if (r.own.grounding)
-    os << ", GROUNDING";
-  if (std::isfinite(r.own.min_separation))
-    os << fmt(", min sep %.0f m", r.own.min_separation);
-  else
-    os << ", no other ship";
-  if (r.safety_violation)
-    os << " (SAFETY VIOLATION)";
-  if (r.own.arrived)
-    os << fmt(", arrived in %.0f s", r.own.time_to_goal);
-  else
-    os << ", not arrived";
-  if (std::isfinite(r.own.path_ratio))
-    os << fmt(", path ratio %.3f", r.own.path_ratio);
-  os << fmt(", COLREGs %.2f", r.own.colregs_score);
-  if (r.plan_time.count > 0)
-    os << fmt(", plan %.1f ms median", r.plan_time.median_ms) << " (" << r.plan_time.count << ")";
-  return os.str();
-}
-
-std::string summaryTable(const RunResult& r) {
-  std::ostringstream os;
-  os << summaryLine(r) << "\n";
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "  %-12s %-16s %-9s %10s %10s %10s %6s %s\n", "target", "encounter", "role",
-                "min_dist_m", "tcpa0_s", "dcpa0_m", "score", "notes");
-  os << buf;
-  for (const auto& t : r.own.targets) {
-    std::string notes;
-    for (const auto& n : t.notes)
-      notes += (notes.empty() ? "" : "; ") + n;
-    std::snprintf(buf, sizeof buf, "  %-12s %-16s %-9s %10.0f %10.0f %10.0f %6.2f ", t.name.c_str(),
-                  encounterName(t.encounter), roleName(t.role), t.min_distance, t.tcpa_at_start,
-                  t.dcpa_at_start, t.score);
-    os << buf << notes << "\n";
-  }
-  for (const auto& m : r.own.manoeuvres)
-    os << fmt("  manoeuvre at t=%.0f s: %+.1f deg\n", m.time, radToDeg(m.course_change));
-  return os.str();
 }
 
 }  // namespace asv

@@ -10,9 +10,8 @@ const char* toString(Encounter e) {
     case Encounter::HeadOn:
       return "head_on";
     case Encounter::CrossingGiveWay:
-      return "crossing_give_way";
     case Encounter::CrossingStandOn:
-      return "crossing_stand_on";
+      return "crossing";
     case Encounter::Overtaking:
       return "overtaking";
     case Encounter::BeingOvertaken:
@@ -26,11 +25,10 @@ const char* toString(Encounter e) {
 const char* toString(OwnRole r) {
   switch (r) {
     case OwnRole::GiveWay:
+    case OwnRole::BothGiveWay:
       return "give_way";
     case OwnRole::StandOn:
       return "stand_on";
-    case OwnRole::BothGiveWay:
-      return "both_give_way";
     case OwnRole::None:
       break;
   }

@@ -10,8 +10,8 @@
 #include "asv_core/risk/colregs.h"
 #include "asv_core/risk/cpa.h"
 #include "asv_core/risk/risk_level.h"
-#include "asv_core/sim/scenario_write.h"
 #include "asv_core/sim/simulation.h"
+#include "asv_core/world/scenario_write.h"
 
 namespace asv {
 namespace {
@@ -153,7 +153,7 @@ std::vector<TargetDraw> drawTargets(Draw& d, const GeneratorConfig& cfg, Situati
       return {drawTarget(d, cfg, Kind::FromPort, tcpa(), 0.0)};
     case SituationClass::Overtaking:
       return {drawTarget(d, cfg, Kind::Overtaking, tcpa(), 0.0)};
-    case SituationClass::Overtaken:
+    case SituationClass::BeingOvertaken:
       return {drawTarget(d, cfg, Kind::Overtaken, tcpa(), 0.0)};
     case SituationClass::RuleBreaker: {
       constexpr Kind give_way[] = {Kind::HeadOn, Kind::FromPort, Kind::Overtaken};
@@ -456,7 +456,7 @@ GeneratedScenario generateScenario(const GeneratorConfig& cfg, SituationClass si
 const std::vector<SituationClass>& allSituationClasses() {
   static const std::vector<SituationClass> all{
       SituationClass::HeadOn,     SituationClass::CrossingGiveWay, SituationClass::CrossingStandOn,
-      SituationClass::Overtaking, SituationClass::Overtaken,       SituationClass::RuleBreaker,
+      SituationClass::Overtaking, SituationClass::BeingOvertaken,       SituationClass::RuleBreaker,
       SituationClass::Multi,      SituationClass::Converging,      SituationClass::Coastal};
   return all;
 }
@@ -471,8 +471,8 @@ const char* toString(SituationClass c) {
       return "crossing_stand_on";
     case SituationClass::Overtaking:
       return "overtaking";
-    case SituationClass::Overtaken:
-      return "overtaken";
+    case SituationClass::BeingOvertaken:
+      return "being_overtaken";
     case SituationClass::RuleBreaker:
       return "rule_breaker";
     case SituationClass::Multi:

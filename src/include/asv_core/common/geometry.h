@@ -38,6 +38,9 @@ inline bool segmentsIntersect(const Eigen::Vector2d& a, const Eigen::Vector2d& b
 
 using Polygon = std::vector<Eigen::Vector2d>;  // vertices in order (either sense), ENU [m]
 
+// `sides` vertices `r` from `centre`, counter-clockwise, the first at ENU angle `first` [rad from east].
+Polygon regularPolygon(const Eigen::Vector2d& centre, double r, int sides, double first);
+
 // Point-in-polygon by the crossing rule (even-odd); works for convex and concave simple polygons.
 // Points exactly on an edge count as inside.
 bool pointInPolygon(const Polygon& poly, const Eigen::Vector2d& p);

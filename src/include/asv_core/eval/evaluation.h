@@ -294,8 +294,5 @@ void zeroWallClock(RunResult& result);
 // A short human summary (one line) and a per-target table (several lines) for logs.
 std::string summaryLine(const RunResult& result);
 std::string summaryTable(const RunResult& result);
-// Shared names at the JSON edge.
-const char* encounterName(Encounter e);  // head_on | crossing | overtaking | being_overtaken | none
-const char* roleName(OwnRole r);         // give_way | stand_on | none (head-on: give_way)
 
 }  // namespace asv

@@ -11,13 +11,13 @@
 
 #include <Eigen/Core>
 
-#include "asv_core/common/obstacle_index.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/common/types.h"
 #include "asv_core/risk/colregs.h"
 #include "asv_core/risk/domain.h"
 #include "asv_core/risk/risk_assessment.h"
 #include "asv_core/risk/risk_level.h"
+#include "asv_core/world/obstacles.h"
 
 namespace asv {
 
@@ -32,39 +32,6 @@ struct PlannerTarget {
   double tcpa = 0.0;  // [s]
   double dcpa = 0.0;  // [m]
 };
-
-struct StaticObstacle {
-  std::string name;
-  Polygon polygon;  // ENU [m], convex or concave, closed implicitly
-  // A spatial index of the polygon's edges, shared by the copies (indexObstacles builds it for
-  // coastlines); without it the queries below scan every vertex.
-  std::shared_ptr<const ObstacleIndex> index = nullptr;
-};
-
-// A point hazard (an aid to navigation) as an obstacle: the octagon round the circle of `radius` [m]
-// about `centre`, so that a plan keeping min_obstacle_clearance_m from the octagon keeps at least
-// radius + min_obstacle_clearance_m from the centre. The circle's radius is that of a point for
-// radius 0 (a 1 m octagon).
-StaticObstacle pointHazard(const std::string& name, const Eigen::Vector2d& centre, double radius);
-// The radius giving a point hazard a clearance of at least `clearance` when plans keep
-// `min_obstacle_clearance` from obstacles: clearance - min_obstacle_clearance, never below 0.
-double pointHazardRadius(double clearance, double min_obstacle_clearance);
-
-// Polygons of at least this many vertices get an index: below it a scan is as fast (bench_land).
-constexpr size_t kIndexedObstacleVertices = 64;
-// Builds the index of every obstacle of kIndexedObstacleVertices or more vertices that has none.
-void indexObstacles(std::vector<StaticObstacle>& obstacles);
-// The geometry.h queries on one obstacle, through its index when it has one.
-bool insideObstacle(const StaticObstacle& o, const Eigen::Vector2d& p);
-double obstacleDistance(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);  // area
-double obstacleBoundaryDistance(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
-double obstacleLengthInside(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
-// polygonDistance from a small polygon (a hull outline) to the obstacle when it is at most `needed`;
-// otherwise any lower bound above `needed` (the cheap bound from the outline's centre, so that a ship
-// far from a coastline costs one query). With an index, the outline's edges' distances (a coastline
-// does not fit inside a hull).
-double polygonObstacleDistance(const Polygon& outline, const StaticObstacle& o,
-                               double needed = std::numeric_limits<double>::infinity());
 
 // The own ship's manoeuvring limits the planners respect.
 struct OwnShipLimits {
@@ -176,15 +143,26 @@ struct TargetDomain {
 // min_separation round each of the problem's targets, as a 36-gon; none when min_separation is 0.
 std::vector<TargetDomain> separationDomains(const PlanningProblem& problem);
 
-// The core algorithm interface every planner implements (ACO, DSSA, DSSA+, MOPSO, GA).
+// The planner interface, the one every planner implements (ACO, DSSA, DSSA+, MOPSO, GA, a third
+// party's) and the one pluginlib loads by class name in planner_node and asv_batch (base class type
+// "asv::PlannerAlgorithm", nav_core's shape): a default constructor, then initialize(); ROS-free, so
+// the same class runs on a boat, in the simulator and in a unit test.
 class PlannerAlgorithm {
 public:
   virtual ~PlannerAlgorithm() = default;
-  // Reads the algorithm's parameters (keys documented by each algorithm); throws
-  // std::invalid_argument naming a bad or unknown key.
+  // Second step of the construction, as planner_node and asv_batch make planners: in sea mode (key
+  // `mode`, default sea) the algorithm's seaDefaults() with `config` over them, in paper mode `config`
+  // alone (the paper's own values). Throws std::invalid_argument naming a bad or unknown key.
+  void initialize(const ParamMap& config);
+  // Reads the algorithm's parameters as given (keys documented by each algorithm), over its own
+  // defaults; throws std::invalid_argument naming a bad or unknown key.
   virtual void configure(const ParamMap& params) = 0;
+  // Plans for the problem within problem.time_budget; never throws on a feasible problem.
   virtual Plan plan(const PlanningProblem& problem) = 0;
   virtual std::string name() const = 0;
+  // The parameters given to initialize() with the sea defaults it added: what a caller needs to build
+  // the same algorithm elsewhere (the distributed DSSA agent does).
+  const ParamMap& parameters() const { return parameters_; }
   // The domains this algorithm plans with round the problem's targets; by default the separation rule
   // every plan keeps. An algorithm with a domain of its own (ACO's hexagon) gives that.
   virtual std::vector<TargetDomain> domains(const PlanningProblem& problem) const {
@@ -193,6 +171,15 @@ public:
   // The published method computes its trajectory once and sails it: in paper mode the follower does not
   // replan when a target's risk rises (applyPlannerMode). False by default: the methods replan.
   virtual bool plansOnce() const { return false; }
+
+protected:
+  PlannerAlgorithm() = default;
+  // Sea-scale values where the algorithm's own defaults follow its paper's units (DSSA's); sea mode
+  // only. None by default.
+  virtual ParamMap seaDefaults() const { return {}; }
+
+private:
+  ParamMap parameters_;
 };
 
 // Wall-clock budget helper for anytime algorithms.

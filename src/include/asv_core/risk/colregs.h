@@ -24,6 +24,9 @@ enum class OwnRole : uint8_t {
   BothGiveWay = 3,  // Rule 14: each alters course to starboard
 };
 
+// The names every output uses (the run result's encounter and own_role, messages, logs, the scenario
+// generator): head_on | crossing | overtaking | being_overtaken | none, and give_way | stand_on | none.
+// A crossing's side is its role; head-on, each ship gives way (Rule 14): give_way.
 const char* toString(Encounter e);
 const char* toString(OwnRole r);
 OwnRole ownRole(Encounter e);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "asv_core/common/units.h"
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace asv {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "asv_core/common/geodesy.h"
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace asv {
 

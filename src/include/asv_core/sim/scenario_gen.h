@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace asv {
 
 // The situation families. One target: HeadOn, CrossingGiveWay (target from starboard, own gives way),
-// CrossingStandOn (target from port gives way), Overtaking (own overtakes), Overtaken (a faster target
+// CrossingStandOn (target from port gives way), Overtaking (own overtakes), BeingOvertaken (a faster target
 // from astern gives way), RuleBreaker (a target that should give way stands on or turns to port).
 // Several targets: Multi (2-5, independent CPA times), Converging (2-5 CPAs within a few minutes of
 // each other). Coastal: 1-3 targets with a coast on one side or a channel.
@@ -30,7 +30,7 @@ enum class SituationClass : uint8_t {
   CrossingGiveWay,
   CrossingStandOn,
   Overtaking,
-  Overtaken,
+  BeingOvertaken,
   RuleBreaker,
   Multi,
   Converging,

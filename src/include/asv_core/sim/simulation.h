@@ -15,8 +15,8 @@
 #include "asv_core/common/geometry.h"
 #include "asv_core/risk/risk_level.h"
 #include "asv_core/sim/autopilot.h"
-#include "asv_core/sim/scenario.h"
 #include "asv_core/sim/vessel_model.h"
+#include "asv_core/world/scenario.h"
 
 namespace asv {
 

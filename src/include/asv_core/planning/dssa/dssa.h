@@ -288,9 +288,19 @@ public:
   std::string name() const override { return config_.speed_changes ? "dssa_plus" : "dssa"; }
   const DssaConfig& config() const { return config_; }
 
+protected:
+  // The paper's defaults are in its own units (DssaConfig::seaDefaults).
+  ParamMap seaDefaults() const override { return DssaConfig::seaDefaults(); }
+
 private:
   std::string preset_;
   DssaConfig config_;
+};
+
+// DSSA+ (Hirayama et al. 2019): course and speed changes; default-constructible for pluginlib.
+class DssaPlusPlanner : public DssaPlanner {
+public:
+  DssaPlusPlanner() : DssaPlanner("dssa_plus") {}
 };
 
 }  // namespace asv

@@ -1,4 +1,4 @@
-#include "asv_core/sim/scenario_write.h"
+#include "asv_core/world/scenario_write.h"
 
 #include <cmath>
 #include <sstream>

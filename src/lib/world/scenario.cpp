@@ -1,12 +1,15 @@
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
+
+#include "asv_core/common/units.h"
 
 namespace asv {
 
@@ -271,9 +274,10 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
   }
   if (n["planner"]) {
     s.planner = c.text(n, "planner", w);
-    const auto& known = knownPlanners();
-    if (std::find(known.begin(), known.end(), s.planner) == known.end())
-      c.fail(n["planner"], w + "planner", "unknown planner (known: aco, dssa, dssa_plus, mopso, ga)");
+    if (!validPlannerName(s.planner))
+      c.fail(n["planner"], w + "planner",
+             "not a planner name: a short name (aco, dssa, dssa_plus, mopso, ga) or a plugin's pluginlib "
+             "name (package/class)");
   }
   if (!own) {
     const std::string b = n["behaviour"] ? c.text(n, "behaviour", w) : "constant";
@@ -341,9 +345,19 @@ const char* toString(Behaviour b) {
   return "constant";
 }
 
-const std::vector<std::string>& knownPlanners() {
-  static const std::vector<std::string> names{"aco", "dssa", "dssa_plus", "mopso", "ga"};
-  return names;
+bool validPlannerName(const std::string& name) {
+  // A ROS package name (lower case, digits, underscores, a letter first) or two joined by one slash.
+  const auto word = [](const std::string& w) {
+    return !w.empty() && std::islower(static_cast<unsigned char>(w[0])) &&
+           std::all_of(w.begin(), w.end(), [](char ch) {
+             return std::islower(static_cast<unsigned char>(ch)) ||
+                    std::isdigit(static_cast<unsigned char>(ch)) || ch == '_';
+           });
+  };
+  const size_t slash = name.find('/');
+  if (slash == std::string::npos)
+    return word(name);
+  return word(name.substr(0, slash)) && word(name.substr(slash + 1));
 }
 
 std::vector<const ScenarioShip*> Scenario::planningShips() const {

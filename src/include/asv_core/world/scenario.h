@@ -13,7 +13,7 @@
 #include "asv_core/charts/charts.h"
 #include "asv_core/common/geodesy.h"
 #include "asv_core/common/param_map.h"
-#include "asv_core/planning/planning.h"
+#include "asv_core/world/obstacles.h"
 
 namespace asv {
 
@@ -96,8 +96,10 @@ struct Scenario {
   std::vector<const ScenarioShip*> planningShips() const;
 };
 
-// Short planner names (asv_bringup/scenarios/README.md).
-const std::vector<std::string>& knownPlanners();
+// A planner's name as scenarios, launch files and asv_batch give it: a short name of asv_planning's
+// (aco, dssa, dssa_plus, mopso, ga) or any plugin's pluginlib name, package/class (lower case, digits
+// and underscores, a letter first). Which exist is pluginlib's to say, when the planner is loaded.
+bool validPlannerName(const std::string& name);
 
 // Parses a scenario; `source` names the file in error messages. Throws ScenarioError. The charts key
 // is read, not loaded: see loadCharts.

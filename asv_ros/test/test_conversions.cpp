@@ -2,12 +2,14 @@
 
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <vector>
 
 #include <asv_core/common/units.h>
 
-#include "asv_risk/conversions.h"
+#include "asv_ros/conversions.h"
 
-using namespace asv_risk;
+using namespace asv_ros;
 
 TEST(Conversions, OdometryYawAndBodyTwistBecomeCourseOverGround) {
   nav_msgs::Odometry o;
@@ -84,25 +86,19 @@ TEST(Conversions, RiskMessageCarriesTheCoreResult) {
   EXPECT_EQ(m.mmsi, 123u);
   EXPECT_NEAR(m.tcpa, 500.0, 1e-9);
   EXPECT_EQ(m.encounter, asv_msgs::TargetRisk::ENCOUNTER_HEAD_ON);
-  EXPECT_EQ(m.own_role, asv_msgs::TargetRisk::ROLE_BOTH_GIVE_WAY);
+  EXPECT_EQ(m.own_role, asv_msgs::TargetRisk::ROLE_GIVE_WAY);  // head-on: each ship gives way
   EXPECT_EQ(m.applicable_rule, 14);
   EXPECT_EQ(m.risk_level, asv_msgs::TargetRisk::RISK_URGENT);  // 500 s, 0 m: within t_safe, d_safe
-}
-
-TEST(Conversions, HeartbeatOnlyWhenNothingWentOutForAPeriod) {
-  ros::Time last(100.0);
-  // 0.3 s after the last array: nothing to send; 0.5 s: an empty array, stamped now, in the frame.
-  EXPECT_FALSE(asv_risk::heartbeatArray(ros::Time(100.3), last, 0.5, "map"));
-  const auto hb = asv_risk::heartbeatArray(ros::Time(100.5), last, 0.5, "map");
-  ASSERT_TRUE(hb);
-  EXPECT_TRUE(hb->targets.empty());
-  EXPECT_EQ(hb->header.stamp, ros::Time(100.5));
-  EXPECT_EQ(hb->header.frame_id, "map");
-  EXPECT_EQ(last, ros::Time(100.5));
-  EXPECT_FALSE(asv_risk::heartbeatArray(ros::Time(100.9), last, 0.5, "map"));
-  // The clock went back (a looping bag): at once; no clock yet: never.
-  EXPECT_TRUE(asv_risk::heartbeatArray(ros::Time(50.0), last, 0.5, "map"));
-  EXPECT_FALSE(asv_risk::heartbeatArray(ros::Time(0.0), last, 0.5, "map"));
+  // planner_node reads the same message back as the planners' risk fields.
+  asv::PlannerTarget pt;
+  riskFromMsg(m, pt);
+  EXPECT_EQ(pt.risk, asv::RiskLevel::Urgent);
+  EXPECT_EQ(pt.encounter, asv::Encounter::HeadOn);
+  EXPECT_EQ(pt.role, asv::OwnRole::BothGiveWay);
+  EXPECT_TRUE(pt.compliant);
+  EXPECT_NEAR(pt.tcpa, 500.0, 1e-9);
+  EXPECT_NEAR(pt.dcpa, 0.0, 1e-9);
+  EXPECT_DOUBLE_EQ(pt.cri, m.cri);
 }
 
 // A GNSS driver's messages (own_ship_node's navsat input), by hand.
@@ -116,21 +112,21 @@ TEST(Conversions, NavSatFixStatusAndCovarianceBecomeQualityAndSigma) {
   m.position_covariance[4] = 9.0;  // north: the larger, 1-sigma 3 m
   asv::gnss::Fix f;
   std::string why;
-  ASSERT_TRUE(asv_risk::navSatToFix(m, f, why));
+  ASSERT_TRUE(asv_ros::navSatToFix(m, f, why));
   EXPECT_EQ(f.quality, asv::gnss::Quality::kDifferential);
   ASSERT_TRUE(f.sigma);
   EXPECT_DOUBLE_EQ(*f.sigma, 3.0);
   m.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
   m.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
-  ASSERT_TRUE(asv_risk::navSatToFix(m, f, why));
+  ASSERT_TRUE(asv_ros::navSatToFix(m, f, why));
   EXPECT_EQ(f.quality, asv::gnss::Quality::kGnss);
   EXPECT_FALSE(f.sigma);  // the fix type's error then applies
   m.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
-  EXPECT_FALSE(asv_risk::navSatToFix(m, f, why));
+  EXPECT_FALSE(asv_ros::navSatToFix(m, f, why));
   EXPECT_EQ(why, "NavSatFix: no fix (status -1)");
   m.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
   m.latitude = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_FALSE(asv_risk::navSatToFix(m, f, why));
+  EXPECT_FALSE(asv_ros::navSatToFix(m, f, why));
   EXPECT_EQ(why, "NavSatFix: no position");
 }
 
@@ -139,20 +135,41 @@ TEST(Conversions, EnuVelocityAndOrientationBecomeCourseSpeedAndHeading) {
   v.twist.linear.x = -3.0;  // west
   v.twist.linear.y = -4.0;  // south: course 216.87 (180 + atan(3/4)), speed 5
   asv::gnss::Motion m;
-  ASSERT_TRUE(asv_risk::enuTwistToMotion(v, m));
+  ASSERT_TRUE(asv_ros::enuTwistToMotion(v, m));
   EXPECT_NEAR(asv::radToDeg(*m.course), 216.8699, 1e-4);
   EXPECT_DOUBLE_EQ(*m.speed, 5.0);
   v.twist.linear.x = std::numeric_limits<double>::infinity();
-  EXPECT_FALSE(asv_risk::enuTwistToMotion(v, m));
+  EXPECT_FALSE(asv_ros::enuTwistToMotion(v, m));
   geometry_msgs::QuaternionStamped q;  // ENU yaw 30 deg (about z): heading 060
   q.quaternion.z = std::sin(asv::degToRad(15.0));
   q.quaternion.w = std::cos(asv::degToRad(15.0));
   double h = 0.0;
-  ASSERT_TRUE(asv_risk::orientationToHeading(q, false, h));
+  ASSERT_TRUE(asv_ros::orientationToHeading(q, false, h));
   EXPECT_NEAR(asv::radToDeg(h), 60.0, 1e-9);
-  ASSERT_TRUE(asv_risk::orientationToHeading(q, true, h));  // nmea_navsat_driver: the yaw is HDT itself
+  ASSERT_TRUE(asv_ros::orientationToHeading(q, true, h));  // nmea_navsat_driver: the yaw is HDT itself
   EXPECT_NEAR(asv::radToDeg(h), 30.0, 1e-9);
   q.quaternion.w = 0.0;
   q.quaternion.z = 0.0;  // the zero quaternion is no rotation
-  EXPECT_FALSE(asv_risk::orientationToHeading(q, false, h));
+  EXPECT_FALSE(asv_ros::orientationToHeading(q, false, h));
+}
+
+// One vocabulary: the message says crossing and the side as the role, head-on give way; the planners'
+// five encounters come back from the pair.
+TEST(Conversions, EncounterAndRoleRoundTripThroughTheMessage) {
+  using TR = asv_msgs::TargetRisk;
+  using asv::Encounter;
+  const std::vector<std::tuple<Encounter, uint8_t, uint8_t>> cases{
+      {Encounter::None, TR::ENCOUNTER_NONE, TR::ROLE_NONE},
+      {Encounter::HeadOn, TR::ENCOUNTER_HEAD_ON, TR::ROLE_GIVE_WAY},
+      {Encounter::CrossingGiveWay, TR::ENCOUNTER_CROSSING, TR::ROLE_GIVE_WAY},
+      {Encounter::CrossingStandOn, TR::ENCOUNTER_CROSSING, TR::ROLE_STAND_ON},
+      {Encounter::Overtaking, TR::ENCOUNTER_OVERTAKING, TR::ROLE_GIVE_WAY},
+      {Encounter::BeingOvertaken, TR::ENCOUNTER_BEING_OVERTAKEN, TR::ROLE_STAND_ON}};
+  for (const auto& [e, msg_encounter, msg_role] : cases) {
+    SCOPED_TRACE(asv::toString(e));
+    EXPECT_EQ(encounterToMsg(e), msg_encounter);
+    EXPECT_EQ(roleToMsg(asv::ownRole(e)), msg_role);
+    EXPECT_EQ(encounterFromMsg(msg_encounter, msg_role), e);
+  }
+  EXPECT_EQ(encounterFromMsg(99, TR::ROLE_NONE), Encounter::None);  // a value from a newer message: none
 }

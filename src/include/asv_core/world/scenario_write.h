@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace asv {
 

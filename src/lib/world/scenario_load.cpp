@@ -3,7 +3,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "asv_core/sim/scenario.h"
+#include "asv_core/world/scenario.h"
 
 namespace asv {
 
