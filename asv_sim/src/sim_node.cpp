@@ -420,9 +420,11 @@ void SimNode::lockstepAckCallback(const asv_msgs::LockstepAck::ConstPtr& msg) {
 }
 
 bool SimNode::lockstepRound(uint64_t step, int phase, const std::vector<std::string>& run, bool wait) {
-  if (clock_step_ != step) {  // the participants act at the step's time
+  if (clock_step_ != step) {  // the participants act at the step's time, on its odometry
     publishClock();
     clock_step_ = step;
+    if (odom_due_)
+      publishState(true, false);
   }
   asv_msgs::LockstepStep m;
   m.header.stamp = ros::Time(kEpoch + sim_->time());
@@ -522,16 +524,19 @@ int SimNode::runLockstep() {
     // Step k: the state and the sensors at t_k, then every stage's work, then the dynamics. /clock goes
     // out first at a step with work (so that it reaches the nodes before their step does), and at
     // least every simulated second for the nodes' diagnostics timers, rviz and rosbag; most steps have
-    // no work. (lockstepRound sends it too, should this guess have missed a round.)
+    // no work. Odometry and tf go out with it: a participant only reads the latest odometry at its step
+    // (it wakes nobody), so at a step without work it would be read by none, and at every step it was
+    // most of a run's messages. (lockstepRound sends both too, should this guess have missed a round.)
     const Sentences sentences = emitSensors();
     const int64_t t_ns = static_cast<int64_t>(ros::Time(kEpoch + sim_->time()).toNSec());
+    odom_due_ = (k - 1) % odom_every == 0;
     if ((k - 1) % clock_every == 0 || !sentences.ais.empty() || !sentences.ttm.empty() ||
         lockstep_.anyRunner(t_ns)) {
       publishClock();
       clock_step_ = k;
     }
     lockstepAdmit(k);
-    publishState((k - 1) % odom_every == 0, (k - 1) % ships_every == 0);
+    publishState(odom_due_ && clock_step_ == k, (k - 1) % ships_every == 0);
     publishSensors(sentences);
     lockstepPhases(k, true);
     lockstepWaitForCmds();
@@ -548,6 +553,7 @@ int SimNode::runLockstep() {
   // The final state and the events of the last step reach the evaluator in a last step.
   publishClock();
   publishState(true, true);
+  odom_due_ = false;  // sent just now
   lockstepPhases(++k, true);
   ROS_INFO("sim_node: lockstep: %lu steps, %lu rounds, %lu timeouts", static_cast<unsigned long>(k),
            static_cast<unsigned long>(lockstep_rounds_), static_cast<unsigned long>(lockstep_timeouts_));

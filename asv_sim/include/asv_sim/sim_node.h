@@ -119,6 +119,7 @@ private:
   asv::LockstepCoordinator lockstep_;
   std::map<int, ros::Publisher> step_pubs_;  // per phase (asv_ros::lockstepStepTopic)
   uint64_t clock_step_ = 0;                  // the lockstep step whose time /clock last carried
+  bool odom_due_ = false;                    // lockstep: this step's odometry is due (odom_rate)
   size_t events_done_ = 0;                   // events already published
   ros::Subscriber ack_sub_;
   std::set<std::string> lockstep_waiting_;  // participants that have not answered the current round
