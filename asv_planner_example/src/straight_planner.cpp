@@ -35,7 +35,8 @@ public:
     plan.speed_setpoint = std::min(speed_fraction_ * asv::keptSpeed(problem), problem.limits.max_speed);
     plan.waypoints.push_back({problem.own.position, 0.0, plan.course_setpoint, plan.speed_setpoint});
     if (plan.speed_setpoint > 0.0)
-      plan.waypoints.push_back({aim, leg.norm() / plan.speed_setpoint, plan.course_setpoint, plan.speed_setpoint});
+      plan.waypoints.push_back(
+          {aim, leg.norm() / plan.speed_setpoint, plan.course_setpoint, plan.speed_setpoint});
     plan.message = "straight for the next waypoint";
     return plan;
   }

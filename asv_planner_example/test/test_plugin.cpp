@@ -75,13 +75,14 @@ TEST(ExamplePlugin, BadParametersFailLoudly) {
 // minimum (the result names the planner as given).
 TEST(ExamplePlugin, RunsAScenarioInAsvBatch) {
   const std::string scenario = ::testing::TempDir() + "example_head_on.yaml";
-  std::ofstream(scenario) << "format: 1\nname: example_head_on\nduration_s: 3600\n"
-                             "own_ship:\n  name: own\n  position: {x_m: 0, y_m: 0}\n  course_deg: 0\n"
-                             "  speed_kn: 10\n  goal: {x_m: 0, y_m: 12000}\n"
-                             "targets:\n  - name: ts1\n    position: {x_m: 0, y_m: 7408}\n    course_deg: 180\n"
-                             "    speed_kn: 10\n";
-  const std::string cmd =
-      std::string(ASV_BATCH_BIN) + " --scenario " + scenario + " --planner " + kName + " --deterministic --quiet";
+  std::ofstream(scenario)
+      << "format: 1\nname: example_head_on\nduration_s: 3600\n"
+         "own_ship:\n  name: own\n  position: {x_m: 0, y_m: 0}\n  course_deg: 0\n"
+         "  speed_kn: 10\n  goal: {x_m: 0, y_m: 12000}\n"
+         "targets:\n  - name: ts1\n    position: {x_m: 0, y_m: 7408}\n    course_deg: 180\n"
+         "    speed_kn: 10\n";
+  const std::string cmd = std::string(ASV_BATCH_BIN) + " --scenario " + scenario + " --planner " + kName +
+                          " --deterministic --quiet";
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
   ASSERT_TRUE(pipe);
   std::string out;

@@ -354,8 +354,8 @@ asv::CycleResult PlannerNode::plan(const std::vector<asv::PlannerTarget>& target
   if (params_.fault_plan_delay > 0.0)  // fault injection: a plugin that overruns
     options.after_plan = [this] { ros::WallDuration(params_.fault_plan_delay).sleep(); };
   const double now = ros::Time::now().toSec();
-  const asv::CycleResult r = asv::planningCycle(
-      *follower_, *plugin_, asv::parsePlannerMode(mode_, params_.planner), now, targets, options);
+  asv::CycleResult r = asv::planningCycle(*follower_, *plugin_, asv::parsePlannerMode(mode_, params_.planner),
+                                          now, targets, options);
   if (!r.replanned)
     return r;
   if (!r.error.empty())

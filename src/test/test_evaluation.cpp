@@ -54,6 +54,7 @@ RunRecorder record(const Script& s, const EvaluationConfig& cfg = {},
   RunRecorder rec(cfg, info);
   Eigen::Vector2d po = s.own0;
   std::vector<Eigen::Vector2d> pt;
+  pt.reserve(tgts.size());
   for (const auto& o : tgts)
     pt.push_back(o.p0);
   for (int k = 0; k <= static_cast<int>(s.duration); ++k) {

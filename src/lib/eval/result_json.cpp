@@ -159,8 +159,8 @@ std::string summaryTable(const RunResult& r) {
     for (const auto& n : t.notes)
       notes += (notes.empty() ? "" : "; ") + n;
     std::snprintf(buf, sizeof buf, "  %-12s %-16s %-9s %10.0f %10.0f %10.0f %6.2f ", t.name.c_str(),
-                  toString(t.encounter), toString(t.role), t.min_distance, t.tcpa_at_start,
-                  t.dcpa_at_start, t.score);
+                  toString(t.encounter), toString(t.role), t.min_distance, t.tcpa_at_start, t.dcpa_at_start,
+                  t.score);
     os << buf << notes << "\n";
   }
   for (const auto& m : r.own.manoeuvres)

@@ -456,7 +456,7 @@ GeneratedScenario generateScenario(const GeneratorConfig& cfg, SituationClass si
 const std::vector<SituationClass>& allSituationClasses() {
   static const std::vector<SituationClass> all{
       SituationClass::HeadOn,     SituationClass::CrossingGiveWay, SituationClass::CrossingStandOn,
-      SituationClass::Overtaking, SituationClass::BeingOvertaken,       SituationClass::RuleBreaker,
+      SituationClass::Overtaking, SituationClass::BeingOvertaken,  SituationClass::RuleBreaker,
       SituationClass::Multi,      SituationClass::Converging,      SituationClass::Coastal};
   return all;
 }
