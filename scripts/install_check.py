@@ -4,7 +4,7 @@
 Usage: install_check.py OUT.xml
 1. `catkin_make install` into install/ (the build space's CMAKE_INSTALL_PREFIX).
 2. A third-party planner plugin compiles against the installed headers alone (asv_core's planner
-   interface, asv_planning's loader, and what they include).
+   interface and what it includes).
 3. With only install/setup.bash sourced (a fresh environment: no devel space, no source folders on the
    package path), every package is found in install/, and scenario.launch runs head_on end to end
    (lockstep, 120 simulated seconds, the installed scenario, rviz config and vessel presets) and writes
@@ -24,7 +24,6 @@ import junit_case
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 INSTALL = os.path.join(ROOT, "install")
 PLUGIN = """#include <asv_core/planning/planning.h>
-#include <asv_planning/plugin_loader.h>
 // A third party's planner, built against the installed headers only.
 class Straight : public asv::PlannerAlgorithm {
 public:

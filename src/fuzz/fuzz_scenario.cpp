@@ -4,7 +4,8 @@
 //
 //   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -I src/include \
 //     -I /usr/include/eigen3 src/fuzz/fuzz_scenario.cpp src/lib/world/scenario.cpp \
-//     src/lib/world/obstacles.cpp src/lib/common/geodesy.cpp src/lib/common/param_map.cpp \
+//     src/lib/world/obstacles.cpp src/lib/common/obstacle_index.cpp src/lib/common/geodesy.cpp \
+//     src/lib/common/param_map.cpp \
 //     src/lib/common/geometry.cpp src/lib/risk/domain.cpp -lyaml-cpp -lGeographicLib -o fuzz_scenario
 //   mkdir -p corpus && cp asv_bringup/scenarios/*.yaml corpus/
 //   ./fuzz_scenario corpus -dict=src/fuzz/scenario.dict -max_total_time=20
