@@ -213,19 +213,17 @@ void ArpaNode::handleOsd(const asv::nmea::Sentence& s, const ros::Time& stamp) {
 
 void ArpaNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) {
   checkClock();
-  const auto& q = msg->pose.pose.orientation;
-  const auto& x = msg->pose.pose.position;
   std::string frame = msg->header.frame_id;
   if (!frame.empty() && frame[0] == '/')
     frame.erase(0, 1);
-  const double n = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
-  if (frame != params_.frame_id || !asv::allFinite({x.x, x.y, q.x, q.y, q.z, q.w}) || !(n > 0.5 && n < 1.5)) {
+  // The one odometry converter every node uses (its checks: finite values, a rotation, a ship's speed).
+  asv::ShipState own;
+  if (frame != params_.frame_id || asv_ros::odometryToShipState(*msg, "own", own) != asv_ros::Reject::None) {
     reject(ArpaReject::kOdom, -1);
     return;
   }
-  const double yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
-  table_.ownShip({x.x, x.y}, asv::yawToCourse(yaw), nanoseconds(stamp));
+  table_.ownShip(own.position, own.heading, nanoseconds(stamp));
 }
 
 void ArpaNode::publish() {
