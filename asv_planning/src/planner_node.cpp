@@ -74,7 +74,10 @@ using AssessedTargets = std::map<std::string, asv::PlannerTarget>;
 AssessedTargets assessedBy(const asv_msgs::RiskAssessment& risk) {
   AssessedTargets assessed;
   for (const auto& r : risk.targets)
-    asv_ros::riskFromMsg(r, assessed[r.target_id]);
+    if (!asv_ros::riskFromMsg(r, assessed[r.target_id]))
+      ROS_WARN_THROTTLE(5.0,
+                        "planner_node: target '%s': unknown encounter %u in the risk picture, taken as none",
+                        r.target_id.c_str(), static_cast<unsigned>(r.encounter));
   return assessed;
 }
 

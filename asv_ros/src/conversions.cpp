@@ -156,7 +156,7 @@ asv_msgs::TargetRisk toMsg(const asv::TargetRisk& r, uint32_t mmsi) {
   return m;
 }
 
-void riskFromMsg(const asv_msgs::TargetRisk& m, asv::PlannerTarget& out) {
+bool riskFromMsg(const asv_msgs::TargetRisk& m, asv::PlannerTarget& out) {
   out.risk = static_cast<asv::RiskLevel>(m.risk_level);
   out.compliant = m.compliant;
   out.encounter = encounterFromMsg(m.encounter, m.own_role);
@@ -164,6 +164,7 @@ void riskFromMsg(const asv_msgs::TargetRisk& m, asv::PlannerTarget& out) {
   out.cri = m.cri;
   out.tcpa = m.tcpa;
   out.dcpa = m.dcpa;
+  return m.encounter == asv_msgs::TargetRisk::ENCOUNTER_NONE || out.encounter != asv::Encounter::None;
 }
 
 geometry_msgs::Quaternion yawToQuaternion(double yaw) {

@@ -91,7 +91,7 @@ TEST(Conversions, RiskMessageCarriesTheCoreResult) {
   EXPECT_EQ(m.risk_level, asv_msgs::TargetRisk::RISK_URGENT);  // 500 s, 0 m: within t_safe, d_safe
   // planner_node reads the same message back as the planners' risk fields.
   asv::PlannerTarget pt;
-  riskFromMsg(m, pt);
+  EXPECT_TRUE(riskFromMsg(m, pt));
   EXPECT_EQ(pt.risk, asv::RiskLevel::Urgent);
   EXPECT_EQ(pt.encounter, asv::Encounter::HeadOn);
   EXPECT_EQ(pt.role, asv::OwnRole::BothGiveWay);
@@ -172,4 +172,10 @@ TEST(Conversions, EncounterAndRoleRoundTripThroughTheMessage) {
     EXPECT_EQ(encounterFromMsg(msg_encounter, msg_role), e);
   }
   EXPECT_EQ(encounterFromMsg(99, TR::ROLE_NONE), Encounter::None);  // a value from a newer message: none
+  TR unknown;
+  unknown.encounter = 99;
+  unknown.risk_level = TR::RISK_URGENT;
+  asv::PlannerTarget pt;
+  EXPECT_FALSE(riskFromMsg(unknown, pt));      // said, not silent
+  EXPECT_EQ(pt.risk, asv::RiskLevel::Urgent);  // and the risk still counts
 }

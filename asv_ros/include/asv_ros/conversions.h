@@ -60,8 +60,10 @@ asv::Encounter encounterFromMsg(uint8_t encounter, uint8_t role);
 // Fills a TargetRisk message from the core result.
 asv_msgs::TargetRisk toMsg(const asv::TargetRisk& r, uint32_t mmsi);
 // The risk fields of a TargetRisk message as the planners see them (risk level, compliance, encounter,
-// role, CRI, TCPA, DCPA); the track is the target's (selectPlannerTargets joins the two).
-void riskFromMsg(const asv_msgs::TargetRisk& m, asv::PlannerTarget& out);
+// role, CRI, TCPA, DCPA); the track is the target's (selectPlannerTargets joins the two). False when the
+// encounter is a value this node does not know (a newer message): it is then none, and the caller
+// says so; the risk level still counts.
+bool riskFromMsg(const asv_msgs::TargetRisk& m, asv::PlannerTarget& out);
 
 // The orientation of an ENU yaw [rad] (REP 103: counter-clockwise from east, about z up).
 geometry_msgs::Quaternion yawToQuaternion(double yaw);
