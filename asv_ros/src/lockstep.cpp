@@ -144,12 +144,12 @@ void Lockstep::tryStep() {
     return;
   }
   const asv_msgs::LockstepStep& s = *pending_;
-  // /clock comes on its own connection, handled by roscpp's internal thread: it is at most a moment
-  // behind the step, so wait for it here (briefly) rather than through the callback queue.
-  for (int i = 0; i < 2000 && s.phase != 0 && ros::Time::now() < s.header.stamp && ros::ok(); ++i)
+  // /clock comes on its own connection, handled by roscpp's internal thread: the latest one sent is at
+  // most a moment behind the step, so wait for it here (briefly) rather than through the callback queue.
+  for (int i = 0; i < 2000 && s.phase != 0 && ros::Time::now() < s.clock && ros::ok(); ++i)
     ros::WallDuration(0.00005).sleep();
   // Phase 0 (admission) comes before any message of the step: nothing to wait for.
-  bool ready = s.phase == 0 || (ros::Time::now() >= s.header.stamp && inputsComplete(s));
+  bool ready = s.phase == 0 || (ros::Time::now() >= s.clock && inputsComplete(s));
   if (!ready && (ros::WallTime::now() - pending_since_).toSec() > timeout_) {
     ROS_ERROR("%s: lockstep step %lu: input or clock still missing after %.0f s; acting on what arrived",
               name_.c_str(), static_cast<unsigned long>(s.step), timeout_);
@@ -178,6 +178,11 @@ void Lockstep::runStep(const asv_msgs::LockstepStep& s) {
       return;
     }
   }
+  // The step's time is the node's time. sim_node sends /clock only once per simulated second (a /clock
+  // at each step with work, to every node, was a third of a run's messages); every /clock sent before
+  // this step has been taken (tryStep), so none can move the clock back.
+  if (ros::Time::isSimTime() && ros::Time::now() < s.header.stamp)
+    ros::Time::setNow(s.header.stamp);
   bool triggered = false;
   for (Input& in : inputs_) {
     std::vector<std::function<void()>> held;

@@ -280,6 +280,7 @@ void SimNode::publishClock() {
   rosgraph_msgs::Clock c;
   c.clock = ros::Time(kEpoch + sim_->time());
   clock_pub_.publish(c);
+  last_clock_ = c.clock;
 }
 
 int SimNode::run() {
@@ -420,14 +421,14 @@ void SimNode::lockstepAckCallback(const asv_msgs::LockstepAck::ConstPtr& msg) {
 }
 
 bool SimNode::lockstepRound(uint64_t step, int phase, const std::vector<std::string>& run, bool wait) {
-  if (clock_step_ != step) {  // the participants act at the step's time, on its odometry
-    publishClock();
-    clock_step_ = step;
+  if (state_step_ != step) {  // the participants act on the step's odometry
+    state_step_ = step;
     if (odom_due_)
       publishState(true, false);
   }
   asv_msgs::LockstepStep m;
   m.header.stamp = ros::Time(kEpoch + sim_->time());
+  m.clock = last_clock_;
   m.step = step;
   m.phase = static_cast<uint8_t>(phase);
   if (phase > 0)
@@ -522,21 +523,21 @@ int SimNode::runLockstep() {
   while (ros::ok() && !runOver()) {
     ++k;
     // Step k: the state and the sensors at t_k, then every stage's work, then the dynamics. /clock goes
-    // out first at a step with work (so that it reaches the nodes before their step does), and at
-    // least every simulated second for the nodes' diagnostics timers, rviz and rosbag; most steps have
-    // no work. Odometry and tf go out with it: a participant only reads the latest odometry at its step
-    // (it wakes nobody), so at a step without work it would be read by none, and at every step it was
-    // most of a run's messages. (lockstepRound sends both too, should this guess have missed a round.)
+    // out every simulated second (every step when recording), for the nodes' diagnostics timers, rviz
+    // and rosbag; a participant takes its step's time from the step itself. Odometry and tf go out at
+    // a step with work (and with /clock): a participant only reads the latest odometry at its step (it
+    // wakes nobody), so at a step without work it would be read by none, and at every step it was most
+    // of a run's messages. (lockstepRound sends it too, should this guess have missed a round.)
     const Sentences sentences = emitSensors();
     const int64_t t_ns = static_cast<int64_t>(ros::Time(kEpoch + sim_->time()).toNSec());
     odom_due_ = (k - 1) % odom_every == 0;
-    if ((k - 1) % clock_every == 0 || !sentences.ais.empty() || !sentences.ttm.empty() ||
-        lockstep_.anyRunner(t_ns)) {
+    const bool clock_due = (k - 1) % clock_every == 0;
+    if (clock_due)
       publishClock();
-      clock_step_ = k;
-    }
+    if (clock_due || !sentences.ais.empty() || !sentences.ttm.empty() || lockstep_.anyRunner(t_ns))
+      state_step_ = k;
     lockstepAdmit(k);
-    publishState(odom_due_ && clock_step_ == k, (k - 1) % ships_every == 0);
+    publishState(odom_due_ && state_step_ == k, (k - 1) % ships_every == 0);
     publishSensors(sentences);
     lockstepPhases(k, true);
     lockstepWaitForCmds();

@@ -118,7 +118,8 @@ private:
   std::map<size_t, std::vector<geometry_msgs::Point>> trails_;  // markers: where each ship has been
   asv::LockstepCoordinator lockstep_;
   std::map<int, ros::Publisher> step_pubs_;  // per phase (asv_ros::lockstepStepTopic)
-  uint64_t clock_step_ = 0;                  // the lockstep step whose time /clock last carried
+  uint64_t state_step_ = 0;                  // the lockstep step whose odometry went out
+  ros::Time last_clock_;                     // the stamp of the latest /clock sent
   bool odom_due_ = false;                    // lockstep: this step's odometry is due (odom_rate)
   size_t events_done_ = 0;                   // events already published
   ros::Subscriber ack_sub_;
