@@ -66,21 +66,50 @@ declare -A smoke_runs=([fuzz_arpa]=1000000 [fuzz_nmea]=200000 [fuzz_scenario]=60
 max_secs=300
 # Short allocation stacks: see scripts/fuzz_long.sh (yaml-cpp's allocations would fill ASan's stack depot).
 export ASAN_OPTIONS=${ASAN_OPTIONS:-malloc_context_size=2}
-status=0
-for name in $(printf '%s\n' "${!targets[@]}" | sort); do
-  if ! command -v clang++ >/dev/null; then junit "$name" skip "clang++ not installed"; continue; fi
-  if [ ! -x "$out/$name" ] || [ -n "$(find src/fuzz src/lib src/include -newer "$out/$name" -print -quit)" ]; then
-    # shellcheck disable=SC2086  # the map value is a word list
-    if ! clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-        -I src/include -I /usr/include/eigen3 ${targets[$name]} -o "$out/$name" 2> "$out/$name.build.log"; then
-      echo "fuzz: $name build FAILED, see $out/$name.build.log"
-      rm -f "$out/$name"
-      junit "$name" fail "build failed, see $out/$name.build.log"; status=1; continue
-    fi
+cxxflags="-std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I src/include -I /usr/include/eigen3"
+# Each source compiles once to an object (shared by the targets that use it), through ccache when it is
+# installed: a fresh clone on the same machine then links from the cache. With -g ccache would hash the
+# working directory too (every clone would miss), hence CCACHE_NOHASHDIR.
+cc="clang++"
+command -v ccache >/dev/null && cc="ccache clang++"
+export CCACHE_NOHASHDIR=1 CCACHE_BASEDIR=$PWD
+
+# object SOURCE: its object file.
+object() { local f=${1%.cpp}; echo "$out/obj/$f.o"; }
+# compile SOURCE: one object, when the source or a header is newer (the make-like test of the binaries).
+compile() {  # shellcheck disable=SC2317  # called through xargs
+  local o
+  o=$(object "$1")
+  mkdir -p "$(dirname "$o")"
+  # shellcheck disable=SC2086  # cc and cxxflags are word lists
+  $cc $cxxflags -c "$1" -o "$o"
+}
+export -f compile object
+export out cc cxxflags
+# link NAME: the target from its objects and libraries.
+link() {
+  local objs=() libs=() f
+  for f in ${targets[$1]}; do
+    case $f in
+      -l*) libs+=("$f") ;;
+      *) objs+=("$(object "$f")") ;;
+    esac
+  done
+  # shellcheck disable=SC2086
+  clang++ $cxxflags "${objs[@]}" "${libs[@]}" -o "$out/$1"
+}
+
+# smoke NAME: builds (when a source is newer than the binary), seeds and runs one target; writes its
+# JUnit result and prints one line; returns 1 on a failure.
+smoke() {
+  local name=$1 runs done_runs
+  if [ ! -x "$out/$name" ]; then
+    echo "fuzz: $name build FAILED, see $out/build.log"
+    junit "$name" fail "build failed, see $out/build.log"; return 1
   fi
   rm -rf "$out/$name.corpus" && mkdir -p "$out/$name.corpus"
   seed "$name" "$out/$name.corpus"
-  [ "$build_only" = 1 ] && continue
+  [ "$build_only" = 1 ] && return 0
   runs=${smoke_runs[$name]}
   # The seeds are read from a copy: libFuzzer adds the inputs it finds to the first corpus folder.
   rm -rf "$out/$name.smoke" && mkdir -p "$out/$name.smoke"
@@ -91,14 +120,47 @@ for name in $(printf '%s\n' "${!targets[@]}" | sort); do
     done_runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "$out/$name.log" | grep -o "[0-9]*$")
     if [ "${done_runs:-0}" -lt "$runs" ]; then
       echo "fuzz: $name stopped by the $max_secs s cap after ${done_runs:-0} of $runs executions"
-      junit "$name" fail "only ${done_runs:-0} of $runs executions in $max_secs s: see $out/$name.log"; status=1
-      continue
+      junit "$name" fail "only ${done_runs:-0} of $runs executions in $max_secs s: see $out/$name.log"; return 1
     fi
     echo "fuzz: $name clean for $runs executions (seed 1)"
     junit "$name" pass ""
   else
     echo "fuzz: $name FOUND A PROBLEM, see $out/$name.log"
-    junit "$name" fail "crash, leak or hang: see $out/$name.log"; status=1
+    junit "$name" fail "crash, leak or hang: see $out/$name.log"; return 1
   fi
+}
+
+if ! command -v clang++ >/dev/null; then
+  for name in "${!targets[@]}"; do junit "$name" skip "clang++ not installed"; done
+  exit 0
+fi
+names=$(printf '%s\n' "${!targets[@]}" | sort)
+# The build: when a source under src/ is newer than a target, every object is brought up to date (the
+# distinct sources, JOBS at a time; ccache answers for the unchanged ones) and the targets relinked.
+stale=0
+for name in $names; do
+  [ ! -x "$out/$name" ] || [ -n "$(find src/fuzz src/lib src/include -newer "$out/$name" -print -quit)" ] && stale=1
+done
+if [ "$stale" = 1 ]; then
+  for name in $names; do rm -f "$out/$name"; done
+  # shellcheck disable=SC2086
+  if printf '%s\n' ${targets[*]} | grep -v '^-l' | sort -u | xargs -P "${JOBS:-2}" -I{} bash -c 'compile {}' \
+       > "$out/build.log" 2>&1; then
+    for name in $names; do link "$name" >> "$out/build.log" 2>&1 || rm -f "$out/$name"; done
+  fi
+fi
+
+# The runs, JOBS (default 2) at a time: each is one process with a fixed number of executions, so
+# running beside another changes its time, not its result.
+status=0
+for name in $names; do
+  while [ "$(jobs -rp | wc -l)" -ge "${JOBS:-2}" ]; do wait -n || status=1; done
+  smoke "$name" &
+done
+while true; do
+  wait -n
+  rc=$?
+  [ "$rc" = 127 ] && break  # no job left
+  [ "$rc" = 0 ] || status=1
 done
 exit $status
