@@ -32,9 +32,12 @@ CLASSES = ["head_on", "crossing_give_way", "crossing_stand_on", "overtaking", "b
 PASS_SEPARATION = 0.99
 PASS_SCORE_SINGLE = 0.95
 PASS_SCORE_MULTI = 0.85
-# ... and no turn to port for a ship met head-on or crossing from starboard unless the evaluator's note
-# shows it was forced (another ship or land where a turn to starboard would have gone).
-UNFORCED_PORT_TURNS = ("rule 14 port turn", "rule 15 port turn")
+# ... no turn to port for a ship met head-on, crossing from starboard or (as the stand-on ship) on the
+# port side unless the evaluator's note shows it was forced (no alteration of 10-90 deg to starboard nor
+# half speed kept clear of every ship and of land), and no stand-on alteration excused by another duty
+# ("rule 17 not applied").
+UNFORCED_PORT_TURNS = ("rule 14 port turn", "rule 15 port turn", "rule 17(c) port turn")
+RULE17_NOT_APPLIED = "rule 17 not applied"
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -161,12 +164,16 @@ def read_manifests(out):
 
 def finding(note):
     """The rule finding a COLREGs note reports, or None."""
-    for pattern, key in [(r"^rule 8:", "rule 8 not apparent"), (r"^rule 16: the give-way ship took no", "rule 16 no action"),
+    if re.match(r"^rule 1[457](\(c\))?: the turn to port .* excused$", note):
+        return None  # made keeping out of the way of another ship, who is named
+    for pattern, key in [(r"^rule 8:", "rule 8 not apparent"), (r"^rule 8\(b\)", "rule 8(b) succession"),
+                         (r"^rule 17 not applied", RULE17_NOT_APPLIED),
+                         (r"^rule 16: the give-way ship took no", "rule 16 no action"),
                          (r"^rule 16:", "rule 16 late"), (r"^rule 14:", "rule 14 port turn"),
                          (r"^rule 15: turned", "rule 15 port turn"), (r"^rule 15: crossed", "rule 15 crossed ahead"),
                          (r"^rule 17\(c\)", "rule 17(c) port turn"), (r"^rule 17:", "rule 17 stand-on altered")]:
         if re.match(pattern, note):
-            # The evaluator says whether a Rule 14/15 port turn was forced (no turn to starboard open).
+            # The evaluator says whether a Rule 14/15/17(c) port turn was forced (no alternative open).
             return key + " (forced)" if "; forced: " in note else key
     return None
 
@@ -222,7 +229,8 @@ def passes(m):
             "separation >= 99 %": None if sep is None else sep >= PASS_SEPARATION,
             "score single >= 0.95": None if s1 is None else s1 >= PASS_SCORE_SINGLE,
             "score multi >= 0.85": None if sm is None else sm >= PASS_SCORE_MULTI,
-            "no unforced port turn": unforced_port_turns(m) == 0}
+            "no unforced port turn": unforced_port_turns(m) == 0,
+            "rule 17 always applied": m["findings"].get(RULE17_NOT_APPLIED, 0) == 0}
 
 
 def unforced_port_turns(m):
@@ -311,8 +319,9 @@ def report(out, results, summary, wall):
              "**tuning** (seed %d) may be looked at while the planners are improved. Each situation runs once per "
              "planner through `asv_batch` (ground truth, no sensors). Pass rules: no own-ship collision or grounding, "
              "the scenario's minimum separation kept in >= 99 %% of runs, mean COLREGs score >= 0.95 with one target "
-             "and >= 0.85 with several, no unforced turn to port under Rules 14/15 (the evaluator's note says when a turn to starboard "
-             "was closed by another ship or land). Plan time: median of the runs' medians, 99th percentile and maximum of the "
+             "and >= 0.85 with several, no unforced turn to port under Rules 14/15/17(c) (the evaluator's note says when no "
+             "alteration of 10-90 deg to starboard nor half speed kept clear of every ship and land), no \"rule 17 not "
+             "applied\" (a stand-on alteration excused by a duty to another ship). Plan time: median of the runs' medians, 99th percentile and maximum of the "
              "runs' maxima (wall clock, %d cores shared by %s job slots)." % (
                  dict(RANGES)["test"], dict(RANGES)["tuning"], os.cpu_count(), wall.get("jobs", "?")), ""]
     for name, _ in RANGES:

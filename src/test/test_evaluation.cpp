@@ -153,12 +153,16 @@ TEST(Evaluation, PortTurnInHeadOnGetsTheRule14Penalty) {
   EXPECT_NEAR(r.own.colregs_score, 0.5, 1e-12);
 }
 
-// The Rule 14 note says whether a turn to starboard was open. The head-on script above: at the first
-// action (t = 100 s, own at (0, 500) on 320 deg) the target's CPA is 900 s off (relative position
-// (0, 9000), relative velocity (3.214, -8.830): 79470 / 88.30). 30 deg to starboard held 900 s runs from
-// (0, 500) to (2250, 4397). A ship lying still at (1500, 3098.1), 3000 m along that line, would have
-// been passed at 0 m; an islet over x 1000-3000 m, y 2000-4000 m is crossed (at (1000, 2232)). Without
-// either the turn was open. The finding and its penalty stand either way.
+// The Rule 14 note says whether an alternative was open at the port turn (t = 100 s; the own ship at
+// (0, 495) on 000 at 5 m/s, ts1 at (0, 9505) on 180): each alteration of 10-90 deg to starboard held
+// until ts1 is past, then back on 000, and half speed on 000. By hand: 10 deg (0.868, 4.924) m/s passes
+// ts1 at 9010 x 0.868 / 9.962 = 785 m < 926 m; 20 deg (1.710, 4.698): 9010 x 1.710 / 9.848 = 1565 m at
+// 901 s, then back on 000 from (1541, 4728) with ts1 at (0, 5000) abeam, 1541 m: open. A ship lying
+// still at (1500, 3098) (on the old single 30 deg test line) closes 20 deg to 520 m and 40 deg to 525 m
+// (perpendicular distances from the line through (0, 495)) and 30 deg to 0 m, but 50 deg passes it
+// 1030 m off and ts1 3807 m off: open, so that ship no longer makes the turn "forced". A coast 200 m
+// to starboard (x >= 200 m) closes every starboard alteration (10 deg reaches x = 782 m), and half speed
+// on 000 meets ts1 head-on (DCPA 0): forced. The finding and its penalty stand either way.
 TEST(Evaluation, Rule14NoteSaysWhetherAPortTurnWasForced) {
   Script s;
   s.tgt0 = {0.0, 10000.0};
@@ -173,17 +177,17 @@ TEST(Evaluation, Rule14NoteSaysWhetherAPortTurnWasForced) {
         return n;
     return std::string("no rule 14 note");
   };
-  EXPECT_NE(rule14(s).find("; not forced: a turn to starboard was open"), std::string::npos) << rule14(s);
+  EXPECT_NE(rule14(s).find("; not forced: 20 deg to starboard was open"), std::string::npos) << rule14(s);
   Script ship = s;
   ship.others = {{{1500.0, 3098.08}, 0.0, 0.0}};
-  EXPECT_NE(rule14(ship).find("; forced: 30 deg to starboard would have passed ts2 at 0 m"),
-            std::string::npos)
+  EXPECT_NE(rule14(ship).find("; not forced: 50 deg to starboard was open"), std::string::npos)
       << rule14(ship);
-  Script islet = s;
-  islet.land = {{"islet", {{1000.0, 2000.0}, {3000.0, 2000.0}, {3000.0, 4000.0}, {1000.0, 4000.0}}, nullptr}};
-  EXPECT_NE(rule14(islet).find("; forced: 30 deg to starboard would have come within 0 m of islet"),
+  Script coast = s;
+  coast.land = {
+      {"coast", {{200.0, -1000.0}, {9000.0, -1000.0}, {9000.0, 20000.0}, {200.0, 20000.0}}, nullptr}};
+  EXPECT_NE(rule14(coast).find("; forced: no turn of 10-90 deg to starboard nor half speed kept clear"),
             std::string::npos)
-      << rule14(islet);
+      << rule14(coast);
 }
 
 // Rule 14 governs while the risk of collision lasts. Own ship north at 5 m/s from the origin, ts1 met
@@ -207,9 +211,105 @@ TEST(Evaluation, Rule14JudgesPortTurnsWhileTheRiskLasts) {
   EXPECT_FALSE(hasNote(removed, "rule 14")) << removed.notes.front();
   EXPECT_NEAR(removed.min_distance, 2686.0, 5.0);
   EXPECT_NEAR(removed.score, 1.0, 1e-12);
+  // The port turn was for no risk with ts1: it earns no Rule 8 or 16 credit either; the risk went at
+  // t = 50 s, 9500 m off, before an action was due.
+  EXPECT_TRUE(hasNote(removed, "the target's own motion removed the risk at t=50 s"))
+      << removed.notes.front();
+  EXPECT_EQ(removed.first_side, 0);
   s.tgt_turns = {{50.0, 190.0}};
   const TargetResult lasting = record(s).finish().own.targets.at(0);
   EXPECT_TRUE(hasNote(lasting, "rule 14: turned 40 deg to port"));
+}
+
+// A port turn that brings the actual CPA below entry_dcpa_m again is judged whatever the held-course
+// copy says. ts1 met head-on from (0, 10000) turns 25 deg to starboard (205) at t = 50 s: from (0, 9750),
+// relative to the own ship held on 000 at (0, 250), r = (0, 9500), v = (-2.113, -9.532): CPA 9500 x
+// 2.113 / 9.763 = 2056 m >= 1852 m, so ts1 alone removed the risk. The own ship turns 20 deg to port
+// (340) at t = 300 s from (0, 1500), ts1 at (-528.3, 8617): r = (-528.3, 7117), v = (-0.403, -9.230),
+// CPA (528.3 x 9.230 + 7117 x 0.403) / 9.239 = 838 m < 1852 m: she made the risk again, a Rule 14
+// finding (the held-course copy alone would have seen none).
+TEST(Evaluation, PortTurnThatRecreatesTheRiskIsARule14Finding) {
+  Script s;
+  s.tgt0 = {0.0, 10000.0};
+  s.tgt_course_deg = 180.0;
+  s.tgt_turns = {{50.0, 205.0}};
+  s.own_course_deg = {{0.0, 0.0}, {300.0, -20.0}};
+  const TargetResult t = record(s).finish().own.targets.at(0);
+  EXPECT_EQ(t.encounter, Encounter::HeadOn);
+  EXPECT_TRUE(hasNote(t, "rule 14: turned 20 deg to port in a head-on encounter")) << t.notes.front();
+  EXPECT_EQ(t.first_side, -1);
+  EXPECT_NEAR(t.min_distance, 838.0, 10.0);
+}
+
+// The same port turn made while overtaking ts2, a slow ship ahead ((0, 1700) north at 1 m/s: TCPA
+// 1700 / 4 = 425 s, DCPA 0 at t = 0, so the own ship keeps out of its way from the start until she
+// passes it, at t = 300 + 111 s: relative (0, 500) and (1.710, -3.698) after the turn), is excused
+// for ts1: the note names ts2 and there is no Rule 14 finding.
+TEST(Evaluation, PortTurnThatRecreatesTheRiskIsExcusedByADutyToAnotherShip) {
+  Script s;
+  s.tgt0 = {0.0, 10000.0};
+  s.tgt_course_deg = 180.0;
+  s.tgt_turns = {{50.0, 205.0}};
+  s.own_course_deg = {{0.0, 0.0}, {300.0, -20.0}};
+  s.others = {{{0.0, 1700.0}, 0.0, 1.0}};
+  const RunResult r = record(s).finish();
+  const TargetResult& t1 = r.own.targets.at(0);
+  EXPECT_EQ(r.own.targets.at(1).encounter, Encounter::Overtaking);
+  EXPECT_TRUE(
+      hasNote(t1, "rule 14: the turn to port at t=300 s was made keeping out of the way of ts2: excused"))
+      << t1.notes.front();
+  EXPECT_FALSE(hasNote(t1, "rule 14: turned"));
+}
+
+// The side of the first alteration counts, not the larger one. Head-on as above with ts1 holding 180:
+// 35 deg to starboard at t = 100 s (early, apparent), then at t = 300 s from (573.6, 1319) to 330 with
+// ts1 at (0, 8500): r = (-573.6, 7181), v = (2.5, -9.330), CPA |(-573.6)(-9.330) - 7181 x 2.5| / 9.659 =
+// 1304 m < 1852 m: a swing across the entry course to port while the risk lasts.
+TEST(Evaluation, SwingAcrossTheEntryCourseToPortIsARule14Finding) {
+  Script s;
+  s.tgt0 = {0.0, 10000.0};
+  s.tgt_course_deg = 180.0;
+  s.own_course_deg = {{0.0, 0.0}, {100.0, 35.0}, {300.0, -30.0}};
+  const RunResult r = record(s).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_EQ(t.first_side, 1);
+  EXPECT_TRUE(hasNote(t,
+                      "rule 14: swung across the entry course to 30 deg to port at t=300 s (after 35 deg "
+                      "to starboard) while the risk lasted"))
+      << t.notes.front();
+  EXPECT_FALSE(hasNote(t, "rule 8"));
+  EXPECT_FALSE(hasNote(t, "rule 16"));
+  EXPECT_NEAR(t.min_distance, 1304.0, 10.0);
+  EXPECT_NE(toJson(r).find("\"first_alteration\": \"starboard\""), std::string::npos);
+}
+
+// Rule 16 is judged at the first readily apparent action: a 6 deg nudge at t = 100 s, then 40 deg to
+// starboard at t = 800 s. Just before it (t = 799 s) the own ship is at (365.3, 3975.9) on 006 and ts1 at
+// (0, 6005): range 2062 m, TCPA (365.3 x 0.523 + 2029.1 x 9.973) / 99.73 = 201 s, both below 2 nm and
+// 8 min: late, p = 0.3 x (1 - 2062 / 3704).
+TEST(Evaluation, Rule16IsJudgedAtTheFirstApparentAction) {
+  Script s;
+  s.tgt0 = {0.0, 10000.0};
+  s.tgt_course_deg = 180.0;
+  s.own_course_deg = {{0.0, 0.0}, {100.0, 6.0}, {800.0, 40.0}};
+  const TargetResult t = record(s).finish().own.targets.at(0);
+  EXPECT_TRUE(hasNote(t, "rule 16: first apparent action at t=800 s, 2062 m and 201 s from CPA: late"))
+      << t.notes.front();
+}
+
+// Rule 8(b): three 8 deg steps to starboard (t = 100, 200, 300 s: three manoeuvres, 30 s window) are a
+// succession of small alterations; two are not.
+TEST(Evaluation, ASuccessionOfSmallAlterationsIsARule8bFinding) {
+  Script s;
+  s.tgt0 = {0.0, 10000.0};
+  s.tgt_course_deg = 180.0;
+  s.own_course_deg = {{0.0, 0.0}, {100.0, 8.0}, {200.0, 16.0}, {300.0, 24.0}};
+  const TargetResult three = record(s).finish().own.targets.at(0);
+  EXPECT_TRUE(hasNote(three, "rule 8(b): a succession of small alterations to starboard (8, 8, 8 deg"))
+      << three.notes.front();
+  s.own_course_deg = {{0.0, 0.0}, {100.0, 8.0}, {200.0, 16.0}};
+  const TargetResult two = record(s).finish().own.targets.at(0);
+  EXPECT_FALSE(hasNote(two, "rule 8(b)"));
 }
 
 TEST(Evaluation, StandOnShipThatTurnsEarlyGetsTheRule17Penalty) {
@@ -231,12 +331,12 @@ TEST(Evaluation, StandOnShipThatTurnsEarlyGetsTheRule17Penalty) {
 namespace {
 
 // ts1 from port, (-5000, 5000) heading east, for which the own ship stands on; she turns 40 deg to
-// starboard at t = 10 s. ts2 starts 12 km ahead at 5 m/s on the given course.
-Script standOnTurnWith(double ts2_course_deg) {
+// starboard at t = 10 s. ts2 starts ts2_range ahead at 5 m/s on the given course.
+Script standOnTurnWith(double ts2_course_deg, double ts2_range = 8000.0) {
   Script s;
   s.tgt0 = {-5000.0, 5000.0};
   s.tgt_course_deg = 90.0;
-  s.others = {{{0.0, 12000.0}, ts2_course_deg, 5.0}};
+  s.others = {{{0.0, ts2_range}, ts2_course_deg, 5.0}};
   s.own_course_deg = {{0.0, 0.0}, {10.0, 40.0}};
   return s;
 }
@@ -246,10 +346,12 @@ Script standOnTurnWith(double ts2_course_deg) {
 TEST(Evaluation, StandOnAlterationWhileGivingWayToAnotherShipIsNoRule17Finding) {
   // ts1 as in the test above: from port, (-5000, 5000) heading east, the own ship stands on; her
   // 40 deg starboard turn at t = 10 s leaves it at DCPA 2394 m (safety 1). ts2 meets her head-on:
-  // (0, 12000) heading south at 5 m/s, TCPA 1200 s <= 1800 s, DCPA 0: both give way from t = 0. After the
-  // turn ts2 is at (0, 11900) relative, closing at (-3.214, -8.830): DCPA |11900 x 3.214| / 9.397 =
-  // 4070 m (safety 1); 40 deg >= 30 (Rule 8); at 11.9 km (Rule 16). So ts2 scores 1, and the turn
-  // taken while keeping out of ts2's way is no Rule 17 finding for ts1: 1, not 0.5.
+  // (0, 8000) heading south at 5 m/s, TCPA 800 s <= 1800 s, DCPA 0: both give way from t = 0. The duty
+  // is real: just before the turn (t = 9 s) ts2's TCPA is 7910 / 10 = 791 s <= 900 s; 60 s after it
+  // (t = 70 s, own at (192.8, 279.8) on 040, ts2 at (0, 7650)) ts2's CPA has widened from 0 to
+  // |192.8 x 8.830 + 7370.2 x 3.214| / 9.397 = 2702 m and ts1's from 0 to 2394 m. ts2 scores 1 (40 deg
+  // >= 30, Rule 8; at 7.9 km, Rule 16), and the turn taken while keeping out of ts2's way is no Rule 17
+  // finding for ts1: 1, not 0.5.
   const RunResult r = record(standOnTurnWith(180.0)).finish();
   ASSERT_EQ(r.own.targets.size(), 2u);
   const TargetResult& t1 = r.own.targets[0];
@@ -264,6 +366,19 @@ TEST(Evaluation, StandOnAlterationWhileGivingWayToAnotherShipIsNoRule17Finding) 
   EXPECT_TRUE(t2.colregs_ok);
   EXPECT_DOUBLE_EQ(t2.score, 1.0);
   EXPECT_DOUBLE_EQ(r.own.colregs_score, 1.0);
+}
+
+TEST(Evaluation, ADutyOutsideItsActionWindowDoesNotExcuseAnEarlyStandOnAlteration) {
+  // ts2 head-on from 12 km: a duty (TCPA 1200 s <= 1800 s at entry), but at the turn its TCPA is
+  // 11910 / 10 = 1191 s > 900 s: not yet in its own action window, so it does not excuse the early
+  // stand-on alteration for ts1: 0.5, and the note says why.
+  const RunResult r = record(standOnTurnWith(180.0, 12000.0)).finish();
+  const TargetResult& t1 = r.own.targets.at(0);
+  EXPECT_TRUE(hasNote(t1, "rule 17: the stand-on ship altered"));
+  EXPECT_NE(t1.notes.front().find("; not excused by ts2: its TCPA 1191 s is outside 900 s"),
+            std::string::npos)
+      << t1.notes.front();
+  EXPECT_NEAR(t1.score, 0.5, 1e-12);
 }
 
 TEST(Evaluation, AnotherShipWithoutRiskDoesNotExcuseAnEarlyStandOnAlteration) {

@@ -25,6 +25,15 @@ double sideOf(const Eigen::Vector2d& u, const Eigen::Vector2d& rel) {
   return u.x() * rel.y() - u.y() * rel.x();
 }
 
+// The least distance between two ships moving at constant velocities for `duration` seconds from a and b.
+double closestOnLeg(const Eigen::Vector2d& a, const Eigen::Vector2d& va, const Eigen::Vector2d& b,
+                    const Eigen::Vector2d& vb, double duration) {
+  const Eigen::Vector2d r = b - a, v = vb - va;
+  const double vv = v.squaredNorm();
+  const double t = vv > 1e-12 ? std::clamp(-r.dot(v) / vv, 0.0, duration) : 0.0;
+  return (r + v * t).norm();
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------
@@ -36,6 +45,7 @@ void EvaluationConfig::validate() const {
           "ranges must satisfy 0 < r_nm_m < r_min_m < r_pref_m");
   require(safety_at_r_min > 0.0 && safety_at_r_min < 1.0, "safety_at_r_min must be in (0, 1)");
   require(pos(entry_tcpa_s) && pos(entry_dcpa_m), "entry_tcpa_s and entry_dcpa_m must be > 0");
+  require(pos(duty_tcpa_s) && pos(duty_effect_s), "duty_tcpa_s and duty_effect_s must be > 0");
   require(pos(action_course_deg) && action_course_deg < 180.0, "action_course_deg must be in (0, 180)");
   require(action_speed_fraction > 0.0 && action_speed_fraction <= 1.0,
           "action_speed_fraction must be in (0, 1]");
@@ -47,7 +57,7 @@ void EvaluationConfig::validate() const {
   require(pos(early_range_m) && pos(early_tcpa_s), "early_range_m and early_tcpa_s must be > 0");
   require(pos(cross_ahead_range_m), "cross_ahead_range_m must be > 0");
   require(frac(penalty_rule8) && frac(penalty_late) && frac(penalty_port) && frac(penalty_ahead) &&
-              frac(penalty_stand_on),
+              frac(penalty_stand_on) && frac(penalty_succession),
           "penalties must be in [0, 1]");
   require(pos(manoeuvre_threshold_deg) && manoeuvre_threshold_deg < 180.0,
           "manoeuvre_threshold_deg must be in (0, 180)");
@@ -82,6 +92,9 @@ EvaluationConfig EvaluationConfig::fromParams(const ParamMap& p) {
   c.penalty_port = p.getDouble("penalty_port", c.penalty_port);
   c.penalty_ahead = p.getDouble("penalty_ahead", c.penalty_ahead);
   c.penalty_stand_on = p.getDouble("penalty_stand_on", c.penalty_stand_on);
+  c.penalty_succession = p.getDouble("penalty_succession", c.penalty_succession);
+  c.duty_tcpa_s = p.getDouble("duty_tcpa_s", c.duty_tcpa_s);
+  c.duty_effect_s = p.getDouble("duty_effect_s", c.duty_effect_s);
   c.manoeuvre_threshold_deg = p.getDouble("manoeuvre_threshold_deg", c.manoeuvre_threshold_deg);
   c.manoeuvre_window_s = p.getDouble("manoeuvre_window_s", c.manoeuvre_window_s);
   c.sample_period_s = p.getDouble("sample_period_s", c.sample_period_s);
@@ -279,20 +292,26 @@ std::vector<Manoeuvre> RunRecorder::manoeuvres(const Track& tr) const {
 }
 
 // What the own ship did in a target's passage, from the entry into the rules (ke) to the closest
-// approach (kc): its largest turns to either side and its largest speed loss relative to the entry,
-// and the first action (ka; both.size() when none).
+// approach (kc), counted only at the samples at which the risk of collision with this target lasted
+// (inRisk): its largest turns to either side and its largest speed loss relative to the entry, its first
+// action (ka) and first readily apparent action (kp), and a turn to port (kport: the first alteration
+// to port, or a swing across the entry course to port after one to starboard). Sample indices are
+// both.size() when there is none.
 struct RunRecorder::Passage {
   const Instants& both;
   const std::vector<Cpa>& cpas;
   EncounterGeometry g;
-  size_t ke = 0, kc = 0, ka = 0;
-  size_t kr = 0;  // the last sample on which a turn to port is judged (riskRemoved)
+  size_t ke = 0, kc = 0, ka = 0, kp = 0;
+  size_t kr = 0;            // the last sample before the target's own motion removed the risk
+  bool risk_lasted = true;  // to the closest approach, or brought back by the own ship's motion
   double max_stbd = 0.0, max_port = 0.0, speed_drop = 0.0;  // [rad], [rad], [-]
   double alter_deg = 0.0;                                   // [deg] the larger turn
   const char* side = "starboard";                           // of the larger turn
-  // Up to kr: a turn to port of at least action_course_deg, larger than to starboard.
-  bool port_dominant = false;
-  size_t own = 0, target = 0;  // the ships' indices (set by evaluatePair)
+  int first_side = 0;                                       // of the first alteration: +1 starboard, -1 port
+  size_t kport = 0;
+  bool swing = false;           // kport is a swing across the entry course, not the first alteration
+  double swing_from_deg = 0.0;  // [deg] the starboard alteration before the swing
+  size_t own = 0, target = 0;   // the ships' indices (set by evaluatePair)
 };
 
 namespace {
@@ -327,6 +346,14 @@ RunRecorder::Instants RunRecorder::commonInstants(size_t i, size_t j) const {
   return both;
 }
 
+// The risk of collision with the target lasts at sample k of the passage while the target's own motion
+// has not removed it (k <= kr), and whenever the ships' actual motion brings the CPA ahead below
+// entry_dcpa_m again: a turn that re-creates the risk with this ship is judged for it, whatever a copy
+// of the own ship held on her entry course would have done.
+bool RunRecorder::inRisk(const Passage& p, size_t k) const {
+  return k <= p.kr || (p.cpas[k].tcpa > 0.0 && p.cpas[k].dcpa < cfg_.entry_dcpa_m);
+}
+
 RunRecorder::Passage RunRecorder::passage(const Instants& both, const std::vector<Cpa>& cpas,
                                           size_t ke) const {
   Passage p{both, cpas, classifyEncounter(both[ke].first->s, both[ke].second->s, cpas[ke], cfg_.colregs)};
@@ -337,24 +364,36 @@ RunRecorder::Passage RunRecorder::passage(const Instants& both, const std::vecto
   const ShipState& own_e = both[ke].first->s;
   const double c_ref = own_e.course, v_ref = own_e.speed;
   const double act_course = degToRad(cfg_.action_course_deg);
-  p.ka = both.size();
+  const double apparent_course = degToRad(cfg_.apparent_course_deg);
+  p.ka = p.kp = p.kport = both.size();
   p.kr = riskRemoved(both, ke, p.kc);
-  double port_r = 0.0, stbd_r = 0.0;  // up to kr
+  p.risk_lasted = p.kr == p.kc;
   for (size_t k = ke; k <= p.kc; ++k) {
+    if (!inRisk(p, k))
+      continue;  // a turn made when there was no risk with this ship is not one for it
+    p.risk_lasted = p.risk_lasted || k > p.kr;
     const ShipState& s = both[k].first->s;
     const double dev = wrapPi(s.course - c_ref);
     const double drop = v_ref > 0.1 ? std::max(0.0, 1.0 - s.speed / v_ref) : 0.0;
+    if (p.first_side == 0 && std::fabs(dev) >= act_course)
+      p.first_side = dev > 0.0 ? 1 : -1;
+    // A swing across the entry course to port counts while the ships' actual motion still holds a risk.
+    const bool actual_risk = cpas[k].tcpa > 0.0 && cpas[k].dcpa < cfg_.entry_dcpa_m;
+    if (p.kport == both.size() && dev <= -act_course && (p.first_side < 0 || actual_risk)) {
+      p.kport = k;
+      p.swing = p.first_side > 0;
+      p.swing_from_deg = radToDeg(p.max_stbd);
+    }
     p.max_stbd = std::max(p.max_stbd, dev);
     p.max_port = std::max(p.max_port, -dev);
     p.speed_drop = std::max(p.speed_drop, drop);
-    if (k <= p.kr)
-      port_r = std::max(port_r, -dev), stbd_r = std::max(stbd_r, dev);
     if (p.ka == both.size() && (std::fabs(dev) >= act_course || drop >= cfg_.action_speed_fraction))
       p.ka = k;
+    if (p.kp == both.size() && (std::fabs(dev) >= apparent_course || drop >= cfg_.apparent_speed_fraction))
+      p.kp = k;
   }
   p.alter_deg = radToDeg(std::max(p.max_stbd, p.max_port));
   p.side = p.max_stbd >= p.max_port ? "starboard" : "port";
-  p.port_dominant = port_r >= act_course && port_r > stbd_r;
   return p;
 }
 
@@ -384,8 +423,12 @@ size_t RunRecorder::riskRemoved(const Instants& both, size_t ke, size_t kc) cons
 }
 
 // The give-way ship (and both ships head-on): Rules 8, 14, 15 and 16.
-void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor) const {
-  const Instants& both = p.both;
+void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor,
+                               const std::vector<GiveWayDuty>& duties) const {
+  if (p.ka == p.both.size() && !p.risk_lasted) {
+    judgeRemovedRisk(p, r, factor);
+    return;
+  }
   // Rule 8: readily apparent.
   const double apparent =
       std::max(p.alter_deg / cfg_.apparent_course_deg, p.speed_drop / cfg_.apparent_speed_fraction);
@@ -394,34 +437,20 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
              std::string("rule 8: ") + p.side +
                  strFormat(" turn %.0f deg (speed -%.0f %%) < %.0f deg apparent", p.alter_deg,
                            100.0 * p.speed_drop, cfg_.apparent_course_deg));
-  // Rule 16: early.
-  if (p.ka == both.size()) {
-    penalise(r, factor, cfg_.penalty_late, "rule 16: the give-way ship took no action");
-  } else {
-    const size_t kb = p.ka > p.ke ? p.ka - 1 : p.ke;
-    const double range = p.cpas[kb].range, tcpa = p.cpas[kb].tcpa;
-    const double early = std::max(range / cfg_.early_range_m, tcpa / cfg_.early_tcpa_s);
-    if (early < 1.0)
-      penalise(
-          r, factor, cfg_.penalty_late * (1.0 - early),
-          strFormat("rule 16: first action at t=%.0f s, %.0f m and %.0f s from CPA: late (early: %.0f m or ",
-                    both[p.ka].first->t, range, tcpa, cfg_.early_range_m) +
-              strFormat("%.0f s)", cfg_.early_tcpa_s));
-  }
+  judgeSuccession(p, r, factor);
+  judgeEarly(p, r, factor);
   // Rules 14 and 15: starboard.
-  if (p.port_dominant && p.g.encounter == Encounter::HeadOn)
-    penalise(r, factor, cfg_.penalty_port,
-             strFormat("rule 14: turned %.0f deg to port in a head-on encounter", radToDeg(p.max_port)) +
-                 forcedNote(p));
-  if (p.port_dominant && p.g.encounter == Encounter::CrossingGiveWay)
-    penalise(r, factor, cfg_.penalty_port,
-             strFormat("rule 15: turned %.0f deg to port for a ship crossing from starboard",
-                       radToDeg(p.max_port)) +
-                 forcedNote(p));
-  if (p.g.encounter != Encounter::CrossingGiveWay)
-    return;
-  // Rule 15: not across the stand-on ship's bow. The first time the own ship crosses the target's
-  // track line after entry decides.
+  if (p.kport < p.both.size() &&
+      (p.g.encounter == Encounter::HeadOn || p.g.encounter == Encounter::CrossingGiveWay))
+    judgePortTurn(p, r, factor, p.g.encounter == Encounter::HeadOn ? "rule 14" : "rule 15", duties);
+  if (p.g.encounter == Encounter::CrossingGiveWay)
+    judgeCrossAhead(p, r, factor);
+}
+
+// Rule 15: not across the stand-on ship's bow. The first time the own ship crosses the target's track
+// line after entry decides.
+void RunRecorder::judgeCrossAhead(const Passage& p, TargetResult& r, double& factor) const {
+  const Instants& both = p.both;
   for (size_t k = p.ke + 1; k < both.size(); ++k) {
     const ShipState& t0 = both[k - 1].second->s;
     const ShipState& t1 = both[k].second->s;
@@ -440,47 +469,197 @@ void RunRecorder::judgeGiveWay(const Passage& p, TargetResult& r, double& factor
   }
 }
 
+// The target's own motion removed the risk before the own ship acted: no action was due after that, so
+// Rules 8 and 16 judge only whether she had been late while it lasted (the range and TCPA at kr).
+void RunRecorder::judgeRemovedRisk(const Passage& p, TargetResult& r, double& factor) const {
+  const Cpa& c = p.cpas[p.kr];
+  const double early = std::max(c.range / cfg_.early_range_m, c.tcpa / cfg_.early_tcpa_s);
+  if (early < 1.0)
+    penalise(r, factor, cfg_.penalty_late * (1.0 - early),
+             strFormat("rule 16: no action while the risk lasted (to t=%.0f s, %.0f m and %.0f s from CPA): "
+                       "late",
+                       p.both[p.kr].first->t, c.range, c.tcpa));
+  else
+    r.notes.push_back(
+        strFormat("the target's own motion removed the risk at t=%.0f s, before an action "
+                  "was due: rules 8 and 16 not evaluated",
+                  p.both[std::min(p.kr + 1, p.kc)].first->t));
+}
+
+// Rule 16: early and substantial. Judged at the first readily apparent action (kp: apparent_course_deg
+// or apparent_speed_fraction), so that a small early nudge does not make a late large turn early; at the
+// first action when none was apparent (Rule 8 then counts too).
+void RunRecorder::judgeEarly(const Passage& p, TargetResult& r, double& factor) const {
+  const Instants& both = p.both;
+  if (p.ka == both.size()) {
+    penalise(r, factor, cfg_.penalty_late, "rule 16: the give-way ship took no action");
+    return;
+  }
+  const size_t ka = p.kp < both.size() ? p.kp : p.ka;
+  const size_t kb = ka > p.ke ? ka - 1 : p.ke;
+  const double range = p.cpas[kb].range, tcpa = p.cpas[kb].tcpa;
+  const double early = std::max(range / cfg_.early_range_m, tcpa / cfg_.early_tcpa_s);
+  if (early < 1.0)
+    penalise(
+        r, factor, cfg_.penalty_late * (1.0 - early),
+        strFormat("rule 16: first %saction at t=%.0f s, %.0f m and %.0f s from CPA: late (early: %.0f m "
+                  "or ",
+                  p.kp < both.size() ? "apparent " : "", both[ka].first->t, range, tcpa, cfg_.early_range_m) +
+            strFormat("%.0f s)", cfg_.early_tcpa_s));
+}
+
+// Rule 8(b): "a succession of small alterations of course and/or speed should be avoided". More than
+// two manoeuvres in one sense in a row, each smaller than apparent_course_deg, within the passage.
+void RunRecorder::judgeSuccession(const Passage& p, TargetResult& r, double& factor) const {
+  const double t0 = p.both[p.ke].first->t, t1 = p.both[p.kc].first->t;
+  int run = 0, sense = 0;
+  std::string sizes;
+  for (const Manoeuvre& m : manoeuvres(tracks_[p.own])) {
+    if (m.time < t0 || m.time > t1)
+      continue;
+    const int s = m.course_change > 0.0 ? 1 : -1;
+    const bool small = std::fabs(radToDeg(m.course_change)) < cfg_.apparent_course_deg;
+    if (!small || s != sense) {
+      run = 0;
+      sizes.clear();
+    }
+    sense = s;
+    if (!small)
+      continue;
+    ++run;
+    sizes += strFormat(run > 1 ? ", %.0f" : "%.0f", std::fabs(radToDeg(m.course_change)));
+    if (run == 3) {
+      penalise(
+          r, factor, cfg_.penalty_succession,
+          strFormat("rule 8(b): a succession of small alterations to %s (", s > 0 ? "starboard" : "port") +
+              sizes + strFormat(" deg, each < %.0f deg)", cfg_.apparent_course_deg));
+      return;
+    }
+  }
+}
+
+// Rules 14, 15 and 17(c): a turn to port while the risk lasts (the first alteration, or a swing across
+// the entry course). A port turn that only the own ship's motion made a risk again (after kr) is excused
+// when she was keeping out of the way of another ship at that moment, and named.
+void RunRecorder::judgePortTurn(const Passage& p, TargetResult& r, double& factor, const char* rule,
+                                const std::vector<GiveWayDuty>& duties) const {
+  const double t = p.both[p.kport].first->t;
+  if (p.kport > p.kr) {
+    const auto duty = std::find_if(duties.begin(), duties.end(), [&](const GiveWayDuty& d) {
+      return d.target != r.name && d.from <= t && t <= d.to;
+    });
+    if (duty != duties.end()) {
+      r.notes.push_back(std::string(rule) +
+                        strFormat(": the turn to port at t=%.0f s was made keeping out of the way of ", t) +
+                        duty->target + ": excused");
+      return;
+    }
+  }
+  const std::string what =
+      p.swing ? strFormat(
+                    "swung across the entry course to %.0f deg to port at t=%.0f s (after %.0f deg to "
+                    "starboard) while the risk lasted",
+                    radToDeg(p.max_port), t, p.swing_from_deg)
+              : strFormat("turned %.0f deg to port", radToDeg(p.max_port));
+  const char* where = p.g.encounter == Encounter::HeadOn            ? " in a head-on encounter"
+                      : p.g.encounter == Encounter::CrossingGiveWay ? " for a ship crossing from starboard"
+                                                                    : " for a ship on the port side";
+  penalise(r, factor, cfg_.penalty_port, std::string(rule) + ": " + what + where + forcedNote(p));
+}
+
 // Rules 14 and 15 ask the give-way ship to turn to starboard, and Rule 17(c) the stand-on ship not to
-// turn to port for a ship on her port side. A turn to starboard was closed to her (our reading; it adds
-// to the note, the finding and its penalty stand) when, at her first action, a
-// turn of apparent_course_deg to starboard at her speed, held until this target's CPA (at least a
-// minute), would have passed another ship (holding its course and speed) closer than the minimum
-// separation, or come within the near-miss range of land (0.1 nm by default, the planners' default
-// clearance from land).
-std::string RunRecorder::starboardClosed(const Passage& p) const {
-  const Point& own = *p.both[p.ka].first;
+// turn to port for a ship on her port side. A port turn was forced (our reading; it adds to the note,
+// the finding and its penalty stand) only when no alternative was open at the port turn itself (kport):
+// every alteration of 10, 20, ... 90 deg to starboard of the entry course at her speed, held until this
+// target is past (its CPA on that course, at least a minute) and then back on the entry course for as
+// long again (at least 5 minutes), and half speed on the entry course, would have passed some ship
+// (holding its course and speed) closer than the minimum separation, or come within the near-miss
+// range of land (0.1 nm by default, the planners' default clearance from land).
+std::string RunRecorder::alternativeOpen(const Passage& p) const {
+  const Point& own = *p.both[p.kport > p.ke ? p.kport - 1 : p.ke].first;
   const ShipState& entry = p.both[p.ke].first->s;
-  const double turn = cfg_.apparent_course_deg;
-  const Eigen::Vector2d v = courseSpeedToVelocity(entry.course + degToRad(turn), entry.speed);
-  const double hold = std::max(60.0, p.cpas[p.ka].tcpa);
+  const ShipState& tgt = p.both[p.kport > p.ke ? p.kport - 1 : p.ke].second->s;
+  for (int turn = 10; turn <= 90; turn += 10) {
+    const Eigen::Vector2d v = courseSpeedToVelocity(entry.course + degToRad(turn), own.s.speed);
+    const Cpa c = computeCpa(own.s.position, v, tgt.position, tgt.velocity());
+    const double hold = std::max(60.0, c.tcpa);
+    if (keepsClear(p, own, v, hold, courseSpeedToVelocity(entry.course, own.s.speed)))
+      return strFormat("%d deg to starboard was open", turn);
+  }
+  const Eigen::Vector2d half = courseSpeedToVelocity(entry.course, 0.5 * own.s.speed);
+  const Cpa c = computeCpa(own.s.position, half, tgt.position, tgt.velocity());
+  if (keepsClear(p, own, half, std::max(60.0, c.tcpa), half))
+    return "half speed was open";
+  return "";
+}
+
+// Whether the own ship, from `own`, at velocity v1 for `hold` seconds and then at v2 for as long again
+// (at least 300 s), keeps r_min from every other ship (holding its course and speed from that instant)
+// and the near-miss range from land.
+bool RunRecorder::keepsClear(const Passage& p, const Point& own, const Eigen::Vector2d& v1, double hold,
+                             const Eigen::Vector2d& v2) const {
+  const double resume = std::max(300.0, hold);
+  const Eigen::Vector2d bend = own.s.position + v1 * hold, end = bend + v2 * resume;
   for (size_t k = 0; k < tracks_.size(); ++k) {
-    if (k == p.own || k == p.target)
+    if (k == p.own)
       continue;
     const auto& pts = tracks_[k].points;
     const auto at = std::lower_bound(pts.begin(), pts.end(), own.t - 1e-6,
                                      [](const Point& q, double t) { return q.t < t; });
     if (at == pts.end() || std::fabs(at->t - own.t) > 1e-6 || !at->active)
       continue;
-    const Cpa c = computeCpa(own.s.position, v, at->s.position, at->s.velocity());
-    const double t = std::clamp(c.tcpa, 0.0, hold);
-    const double d = ((own.s.position + v * t) - (at->s.position + at->s.velocity() * t)).norm();
-    if (d < r_min_)
-      return strFormat("%.0f deg to starboard would have passed ", turn) + info_.ships[k].name +
-             strFormat(" at %.0f m", d);
+    const Eigen::Vector2d tv = at->s.velocity();
+    const Eigen::Vector2d t_bend = at->s.position + tv * hold;
+    if (closestOnLeg(own.s.position, v1, at->s.position, tv, hold) < r_min_ ||
+        closestOnLeg(bend, v2, t_bend, tv, resume) < r_min_)
+      return false;
   }
-  const Eigen::Vector2d end = own.s.position + v * hold;
-  for (const StaticObstacle& o : info_.obstacles) {
-    const double d = obstacleDistance(o, own.s.position, end);
-    if (d < r_nm_)
-      return strFormat("%.0f deg to starboard would have come within %.0f m of ", turn, d) + o.name;
-  }
-  return "";
+  for (const StaticObstacle& o : info_.obstacles)
+    if (obstacleDistance(o, own.s.position, bend) < r_nm_ || obstacleDistance(o, bend, end) < r_nm_)
+      return false;
+  return true;
 }
 
-// The end of a port-turn note (Rules 14, 15, 17(c)): whether a turn to starboard was open.
+// The end of a port-turn note (Rules 14, 15, 17(c)): whether an alternative was open.
 std::string RunRecorder::forcedNote(const Passage& p) const {
-  const std::string why = p.ka < p.both.size() ? starboardClosed(p) : "";
-  return why.empty() ? "; not forced: a turn to starboard was open" : "; forced: " + why;
+  const std::string open = alternativeOpen(p);
+  return open.empty() ? "; forced: no turn of 10-90 deg to starboard nor half speed kept clear"
+                      : "; not forced: " + open;
+}
+
+// The CPA of ships i and j from their samples at time t (nullopt when either is not there then).
+std::optional<Cpa> RunRecorder::cpaAt(size_t i, size_t j, double t) const {
+  auto at = [&](size_t k) -> const Point* {
+    const auto& pts = tracks_[k].points;
+    const auto it = std::lower_bound(pts.begin(), pts.end(), t - 1e-6,
+                                     [](const Point& q, double tt) { return q.t < tt; });
+    return it == pts.end() || std::fabs(it->t - t) > 1e-6 || !it->active ? nullptr : &*it;
+  };
+  const Point *a = at(i), *b = at(j);
+  if (!a || !b)
+    return std::nullopt;
+  return computeCpa(a->s, b->s);
+}
+
+// A duty to keep out of the way of another ship excuses an early stand-on action only when it is real
+// (our reading of Rule 17 with several ships): at the action that ship is within its own action window
+// (0 < TCPA <= duty_tcpa_s), and duty_effect_s later the action has widened that ship's CPA without
+// cutting this target's below the smaller of its CPA before the action and r_pref. "" when it is real,
+// else why not.
+std::string RunRecorder::dutyNotReal(const Passage& p, const GiveWayDuty& d, double t_action) const {
+  const double before = p.ka > p.ke ? p.both[p.ka - 1].first->t : t_action;
+  const double after = t_action + cfg_.duty_effect_s;
+  const std::optional<Cpa> x0 = cpaAt(p.own, d.ship, before), x1 = cpaAt(p.own, d.ship, after);
+  const std::optional<Cpa> s0 = cpaAt(p.own, p.target, before), s1 = cpaAt(p.own, p.target, after);
+  if (!x0 || !x1 || !s0 || !s1)
+    return "the ships' tracks end before the action took effect";
+  if (!(x0->tcpa > 0.0 && x0->tcpa <= cfg_.duty_tcpa_s))
+    return strFormat("its TCPA %.0f s is outside %.0f s", x0->tcpa, cfg_.duty_tcpa_s);
+  if (x1->dcpa <= x0->dcpa)
+    return strFormat("the action did not widen its CPA (%.0f m -> %.0f m)", x0->dcpa, x1->dcpa);
+  if (s1->dcpa < std::min(s0->dcpa, r_pref_))
+    return strFormat("the action cut this ship's CPA (%.0f m -> %.0f m)", s0->dcpa, s1->dcpa);
+  return "";
 }
 
 // The stand-on ship: Rule 17 (no action before the give-way ship's action is clearly lacking; not to
@@ -498,8 +677,14 @@ void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor
       ku = k;
   const bool early = p.ka < both.size() && p.ka < ku;
   const double t_action = early ? both[p.ka].first->t : 0.0;
+  std::string unreal;  // why the duties at t_action do not excuse the action
   const auto duty = std::find_if(duties.begin(), duties.end(), [&](const GiveWayDuty& d) {
-    return d.target != r.name && d.from <= t_action && t_action <= d.to;
+    if (d.target == r.name || d.from > t_action || t_action > d.to)
+      return false;
+    const std::string why = dutyNotReal(p, d, t_action);
+    if (!why.empty() && unreal.empty())
+      unreal = "; not excused by " + d.target + ": " + why;
+    return why.empty();
   });
   if (early && duty != duties.end()) {
     r.notes.push_back(
@@ -515,14 +700,11 @@ void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor
         strFormat("rule 17: the stand-on ship altered (%.0f deg, speed -%.0f %%) at t=%.0f s, before the "
                   "give-way ship's action was clearly lacking (",
                   p.alter_deg, 100.0 * p.speed_drop, both[p.ka].first->t) +
-            urgent + ")");
+            urgent + ")" + unreal);
     return;
   }
-  if (p.ka < both.size() && p.port_dominant && p.g.encounter == Encounter::CrossingStandOn)
-    penalise(
-        r, factor, cfg_.penalty_port,
-        strFormat("rule 17(c): turned %.0f deg to port for a ship on the port side", radToDeg(p.max_port)) +
-            forcedNote(p));
+  if (p.kport < both.size() && p.g.encounter == Encounter::CrossingStandOn)
+    judgePortTurn(p, r, factor, "rule 17(c)", duties);
 }
 
 void RunRecorder::finishScore(TargetResult& r, double factor) const {
@@ -566,7 +748,7 @@ std::vector<RunRecorder::GiveWayDuty> RunRecorder::giveWayDuties(
       continue;
     const Passage p = passage(h.both, h.cpas, h.ke);
     if (givesWay(p.g.role))
-      out.push_back({info_.ships[j].name, h.both[h.ke].first->t, h.both[p.kc].first->t});
+      out.push_back({info_.ships[j].name, j, h.both[h.ke].first->t, h.both[p.kc].first->t});
   }
   return out;
 }
@@ -606,9 +788,10 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const PairHistory& h,
   p.target = j;
   r.encounter = p.g.encounter;
   r.role = p.g.role;
+  r.first_side = p.first_side;
   double factor = 1.0;
   if (givesWay(p.g.role))
-    judgeGiveWay(p, r, factor);
+    judgeGiveWay(p, r, factor, duties);
   else if (p.g.role == OwnRole::StandOn)
     judgeStandOn(p, r, factor, duties);
   finishScore(r, factor);

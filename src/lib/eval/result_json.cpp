@@ -43,6 +43,10 @@ Json targetJson(const TargetResult& t, const LocalFrame& frame) {
     notes.arr.push_back(Json::string(n));
   o.add("colregs_notes", notes);
   o.add("colregs_score", Json::number(t.score, kRatio));
+  // The side of the own ship's first alteration of action_course_deg or more while the risk lasted.
+  o.add("first_alteration", t.first_side == 0  ? Json()
+                            : t.first_side > 0 ? Json::string("starboard")
+                                               : Json::string("port"));
   return o;
 }
 

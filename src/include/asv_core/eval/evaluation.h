@@ -64,13 +64,19 @@ struct EvaluationConfig {
   // risk level 2: 0 <= TCPA <= t_safe and DCPA < d_safe), which is also when Hu's Algorithm 1 flags a
   // target that went from risk 1 straight to 2.
   HuRiskConfig hu;
+  // Rule 17 with several ships: a duty to keep out of the way of another ship excuses an early stand-on
+  // action only when that ship's TCPA is within duty_tcpa_s at the action and, duty_effect_s later,
+  // the action has widened its CPA without cutting the stand-on target's (our reading).
+  double duty_tcpa_s = 900.0;   // [s] 15 min: the other ship's own action window
+  double duty_effect_s = 60.0;  // [s] when the action's effect on the CPAs is measured
 
   // Penalties (fractions of the target's score removed; the score is safety x prod(1 - p)).
-  double penalty_rule8 = 0.3;     // x (1 - alteration / apparent): not readily apparent
-  double penalty_late = 0.3;      // x lateness in [0, 1]; full penalty when no action at all
-  double penalty_port = 0.5;      // Rule 14/15 (and 17(c)): the dominant turn was to port
-  double penalty_ahead = 0.5;     // Rule 15: crossed ahead of the stand-on ship
-  double penalty_stand_on = 0.5;  // Rule 17: the stand-on ship acted before it was allowed to
+  double penalty_rule8 = 0.3;       // x (1 - alteration / apparent): not readily apparent
+  double penalty_late = 0.3;        // x lateness in [0, 1]; full penalty when no action at all
+  double penalty_port = 0.5;        // Rule 14/15 (and 17(c)): a turn to port while the risk lasted
+  double penalty_ahead = 0.5;       // Rule 15: crossed ahead of the stand-on ship
+  double penalty_stand_on = 0.5;    // Rule 17: the stand-on ship acted before it was allowed to
+  double penalty_succession = 0.3;  // Rule 8(b): more than two small alterations in one sense in a row
 
   // Manoeuvres: a course set-point change of at least manoeuvre_threshold_deg from the last settled
   // set-point; later changes within manoeuvre_window_s of its start belong to the same manoeuvre.
@@ -141,6 +147,7 @@ struct TargetResult {
   double score = 1.0;   // [0, 1] safety x prod(1 - penalties)
   bool colregs_ok = true;
   std::vector<std::string> notes;
+  int first_side = 0;  // of the first alteration while the risk lasted: +1 starboard, -1 port, 0 none
 };
 
 // One ship's view of the run (the own ship's fills the top level; multi-agent runs list every
@@ -233,6 +240,7 @@ private:
   // approach [s].
   struct GiveWayDuty {
     std::string target;
+    size_t ship;  // its index
     double from, to;
   };
   int index(const std::string& name) const;
@@ -256,12 +264,24 @@ private:
   Passage passage(const Instants& both, const std::vector<Cpa>& cpas, size_t ke) const;
   // The last sample of the passage (ke to kc) before the target's own motion removed the risk.
   size_t riskRemoved(const Instants& both, size_t ke, size_t kc) const;
-  void judgeGiveWay(const Passage& p, TargetResult& r, double& factor) const;
-  // Why a turn to starboard was not open at the own ship's first action for the target ("" when it was).
-  std::string starboardClosed(const Passage& p) const;
+  bool inRisk(const Passage& p, size_t k) const;
+  void judgeGiveWay(const Passage& p, TargetResult& r, double& factor,
+                    const std::vector<GiveWayDuty>& duties) const;
+  void judgeRemovedRisk(const Passage& p, TargetResult& r, double& factor) const;
+  void judgeEarly(const Passage& p, TargetResult& r, double& factor) const;
+  void judgeSuccession(const Passage& p, TargetResult& r, double& factor) const;
+  void judgeCrossAhead(const Passage& p, TargetResult& r, double& factor) const;
+  void judgePortTurn(const Passage& p, TargetResult& r, double& factor, const char* rule,
+                     const std::vector<GiveWayDuty>& duties) const;
+  // The first alternative to a port turn that was open at it ("" when none was: the turn was forced).
+  std::string alternativeOpen(const Passage& p) const;
+  bool keepsClear(const Passage& p, const Point& own, const Eigen::Vector2d& v1, double hold,
+                  const Eigen::Vector2d& v2) const;
   std::string forcedNote(const Passage& p) const;
   void judgeStandOn(const Passage& p, TargetResult& r, double& factor,
                     const std::vector<GiveWayDuty>& duties) const;
+  std::optional<Cpa> cpaAt(size_t i, size_t j, double t) const;
+  std::string dutyNotReal(const Passage& p, const GiveWayDuty& d, double t_action) const;
   void finishScore(TargetResult& r, double factor) const;
   std::vector<Manoeuvre> manoeuvres(const Track& tr) const;
 
