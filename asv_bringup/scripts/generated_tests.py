@@ -2,7 +2,7 @@
 """Whole-pipeline rostest on generated situations nobody tuned the planners for.
 
 asv_scenario_gen writes situations 0..9 of the Monte-Carlo benchmark's test range (seed 7919: one of
-each of its nine classes, then a second head-on), each cut to 10 minutes after its last unaltered CPA so
+each of its first ten classes in asv_scenario_gen --list-classes order), each cut to 10 minutes after its last unaltered CPA so
 that the run ends once the encounters are over. Each runs with two planners through scenario.launch in
 lockstep (sim_node -> NMEA -> ais_node/arpa_node -> tracker -> risk_node -> planner_node) and once
 through asv_batch (ground truth, in process). Pass rules, as the benchmark's (docs/evaluation.md): the

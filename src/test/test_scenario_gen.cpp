@@ -134,6 +134,61 @@ TEST(ScenarioGen, RuleBreakersConvergingTrafficAndCoasts) {
   EXPECT_LT(channels, 10);
 }
 
+// The families that probe the referee, checked with the hand formulas: the offset head-on passes
+// 0.3-0.8 nm off if both hold on; the boundary sweep is 8-35 deg off the reciprocal, on both bows over
+// the draws; the starboard side of an occupied head-on holds a ship (or a coast) and a manoeuvre
+// without a port turn keeps 0.5 nm; the remote duty is a slow ship ahead, overtaken 0.5-0.9 nm abeam
+// after 20-30 min, with a ship crossing from port that gives way.
+TEST(ScenarioGen, FamiliesThatProbeTheReferee) {
+  const double nm = 1852.0, slack = 5.0;  // rounding of positions, courses and speeds
+  int bows[2] = {0, 0}, coasts = 0, anchored = 0;
+  for (uint64_t i = 0; i < 10; ++i) {
+    const Scenario off = generateScenario(kCfg, SituationClass::OffsetHeadOn, 3, i).scenario;
+    ASSERT_EQ(off.targets.size(), 1u);
+    const HandCpa c = handCpa(off.own, off.targets[0]);
+    EXPECT_GE(c.dcpa, 0.3 * nm - slack) << off.name;
+    EXPECT_LE(c.dcpa, 0.8 * nm + slack) << off.name;
+    EXPECT_NEAR(courseDiffDeg(off.own, off.targets[0]), 180.0, 6.1) << off.name;
+
+    const Scenario sw = generateScenario(kCfg, SituationClass::HeadOnCrossingBoundary, 3, i).scenario;
+    ASSERT_EQ(sw.targets.size(), 1u);
+    const double off_reciprocal = courseDiffDeg(sw.own, sw.targets[0]) - 180.0;
+    EXPECT_GE(std::fabs(off_reciprocal), 8.0 - 0.1) << sw.name;
+    EXPECT_LE(std::fabs(off_reciprocal), 35.0 + 0.1) << sw.name;
+    ++bows[off_reciprocal > 0.0];
+
+    const Scenario oc = generateScenario(kCfg, SituationClass::HeadOnStarboardOccupied, 3, i).scenario;
+    EXPECT_NEAR(courseDiffDeg(oc.own, oc.targets[0]), 180.0, 6.1) << oc.name;
+    if (oc.targets.size() == 2) {
+      const double rb = relativeBearingDeg(oc.own, oc.targets[1]);
+      EXPECT_GT(rb, 0.0) << oc.name;
+      EXPECT_LT(rb, 90.0) << oc.name;  // on the starboard bow
+      anchored += oc.targets[1].speed == 0.0;
+    } else {
+      ASSERT_EQ(oc.obstacles.size(), 1u) << oc.name;
+      ++coasts;
+    }
+    EXPECT_TRUE(manoeuvreExists(oc, 0.0, kCfg.min_separation_m,
+                                oc.obstacles.empty() ? 0.0 : kCfg.obstacle_clearance_m, kCfg.check_dt, false))
+        << oc.name;
+
+    const Scenario rd = generateScenario(kCfg, SituationClass::StandOnRemoteDuty, 3, i).scenario;
+    ASSERT_EQ(rd.targets.size(), 2u);
+    EXPECT_GT(relativeBearingDeg(rd.own, rd.targets[0]), 247.5) << rd.name;  // from port, gives way
+    EXPECT_EQ(rd.targets[0].behaviour, Behaviour::GiveWay) << rd.name;
+    const HandCpa duty = handCpa(rd.own, rd.targets[1]);
+    EXPECT_GE(duty.tcpa, 1200.0 - slack) << rd.name;
+    EXPECT_LE(duty.tcpa, 1800.0 + slack) << rd.name;
+    EXPECT_GE(duty.dcpa, 0.5 * nm - slack) << rd.name;
+    EXPECT_LE(duty.dcpa, 0.9 * nm + slack) << rd.name;
+    EXPECT_LT(rd.targets[1].speed, rd.own.speed) << rd.name;
+  }
+  EXPECT_GT(bows[0], 0);
+  EXPECT_GT(bows[1], 0);
+  EXPECT_GT(coasts, 0);
+  EXPECT_GT(anchored, 0);
+}
+
 TEST(ScenarioGen, AManoeuvreExistsOnlyWhileThereIsRoomToMakeIt) {
   // Head-on, 8 km apart, closing at 12 m/s (6 + 6). Acting at once, a 30-40 deg turn keeps 926 m. At
   // t = 580 s the range is 8000 - 12 x 580 = 1040 m: nothing can keep 926 m any more.

@@ -24,14 +24,14 @@ const char* const kUsage =
     "\n"
     "Writes N scenario files (format 1) to DIR, situation I..I+N-1 of seed S: the same arguments give the\n"
     "same files, byte for byte. Each target is placed to reach its closest point of approach after 8-30\n"
-    "min at 0-0.3 nm; a draw whose targets start inside twice the minimum separation, whose encounter\n"
+    "min at 0-0.3 nm (the families that probe the referee: as --list-classes says); a draw whose targets start inside twice the minimum separation, whose encounter\n"
     "classifies otherwise, whose targets collide or ground on their own, or where no course or speed\n"
     "change of the own ship at the moment a rule-breaker's breach shows could keep 0.5 nm, is drawn again\n"
     "(counted). Also writes DIR/manifest.tsv: file, class, targets, rule-breakers, redraws.\n"
     "\n"
     "  --out DIR            output folder (created)\n"
     "  --class NAME|all     one family (see --list-classes) or all (default): situation I is then\n"
-    "                       class I mod 9, in --list-classes order\n"
+    "                       class I mod 13, in --list-classes order\n"
     "  --count N            number of files (default 9)\n"
     "  --seed S             seed (default 1)\n"
     "  --first I            index of the first situation (default 0)\n"
@@ -54,7 +54,17 @@ const char* const kClassHelp =
     "rule_breaker       one ship that should give way stands on or turns to port (Rules 2, 17)\n"
     "multi              2-5 ships of any encounter, CPAs at independent times, 20 % rule-breakers\n"
     "converging         2-5 ships whose CPAs fall within 3 minutes of each other, 20 % rule-breakers\n"
-    "coastal            1-3 ships with a coast on one side of the route or a channel\n";
+    "coastal            1-3 ships with a coast on one side of the route or a channel\n"
+    "offset_head_on     one ship met nearly head-on 0.3-0.8 nm off either side; she gives way or never acts\n"
+    "head_on_starboard_occupied\n"
+    "                   head-on, with a ship at anchor, a slow ship or a coast on the starboard side; a\n"
+    "                   starboard manoeuvre is still open (Rules 14, 8)\n"
+    "head_on_crossing_boundary\n"
+    "                   one ship 8-35 deg off the reciprocal on either bow: either side of the head-on /\n"
+    "                   crossing boundary (Rules 14, 15)\n"
+    "stand_on_remote_duty\n"
+    "                   a ship crossing from port gives way (the own ship stands on), and a slow ship ahead\n"
+    "                   that she overtakes 0.5-0.9 nm abeam after 20-30 min (Rule 17 with several ships)\n";
 
 struct Args {
   std::string out, cls = "all";

@@ -90,6 +90,8 @@ struct TargetDraw {
   double side = 1.0;        // which side of the own ship the CPA lies
   double length = 0.0;      // [m]
   Behaviour behaviour = Behaviour::Constant;
+  bool check_encounter = true;  // refuse the draw when the placed target classifies otherwise
+  std::string what;             // the description's words for it ("" : describe(kind))
 };
 
 // Relative course and speed ratio of an encounter (the classification is checked after placement).
@@ -142,6 +144,49 @@ Kind anyKind(Draw& d, bool channel) {
   return kKinds[d.integer(0, 4)];
 }
 
+// The families that probe the referee (scenario_gen.h). Ranges: our choice, from issue-style examples
+// (an offset head-on 0.3-0.8 nm, a boundary sweep 8-35 deg off the reciprocal, a remote duty 20-30 min).
+std::vector<TargetDraw> drawProbe(Draw& d, const GeneratorConfig& cfg, SituationClass c, double tcpa) {
+  const double nm = kMetresPerNauticalMile;
+  TargetDraw t =
+      drawTarget(d, cfg, c == SituationClass::StandOnRemoteDuty ? Kind::FromPort : Kind::HeadOn, tcpa, 0.0);
+  if (c == SituationClass::OffsetHeadOn) {
+    t.dcpa = d.uniform(0.3, 0.8) * nm;
+    t.behaviour = d.chance(0.5) ? Behaviour::GiveWay : Behaviour::NonCompliant;
+    t.check_encounter = false;  // an offset this large may put her just off the head-on sector
+    t.what = "met nearly head-on, offset";
+    return {t};
+  }
+  if (c == SituationClass::HeadOnCrossingBoundary) {
+    t.rel_course = 180.0 + d.sign() * d.uniform(8.0, 35.0);
+    t.check_encounter = false;  // the point: either side of the head-on/crossing boundary
+    t.what = strFormat("near the head-on/crossing boundary, %.0f deg off the reciprocal",
+                       std::fabs(t.rel_course - 180.0));
+    return {t};
+  }
+  TargetDraw o;  // the other ship: anchored or slow on the starboard side, or overtaken far ahead
+  o.kind = Kind::Overtaking;
+  o.length = std::round(d.uniform(30.0, 300.0));
+  if (c == SituationClass::StandOnRemoteDuty) {
+    o.ratio = d.uniform(0.2, 0.5);
+    o.tcpa = d.uniform(1200.0, 1800.0);
+    o.dcpa = d.uniform(0.5, 0.9) * nm;
+    o.side = d.sign();
+    o.what = "a slow ship the own ship overtakes (her remote give-way duty)";
+    return {t, o};
+  }
+  const int obstruction = d.integer(0, 2);  // 0 anchored, 1 slow, 2 a coast (drawScenario)
+  if (obstruction == 2)
+    return {t};
+  o.ratio = obstruction == 0 ? 0.0 : d.uniform(0.15, 0.35);
+  o.tcpa = t.tcpa * d.uniform(0.5, 0.9);
+  o.dcpa = d.uniform(0.3, 0.7) * nm;
+  o.side = 1.0;  // on the own ship's starboard side
+  o.check_encounter = false;
+  o.what = obstruction == 0 ? "at anchor on the starboard bow" : "a slow ship on the starboard bow";
+  return {t, o};
+}
+
 std::vector<TargetDraw> drawTargets(Draw& d, const GeneratorConfig& cfg, SituationClass c, bool channel) {
   const auto tcpa = [&] { return d.uniform(cfg.tcpa_min_s, cfg.tcpa_max_s); };
   switch (c) {
@@ -159,6 +204,11 @@ std::vector<TargetDraw> drawTargets(Draw& d, const GeneratorConfig& cfg, Situati
       constexpr Kind give_way[] = {Kind::HeadOn, Kind::FromPort, Kind::Overtaken};
       return {drawTarget(d, cfg, give_way[d.integer(0, 2)], tcpa(), 1.0)};
     }
+    case SituationClass::OffsetHeadOn:
+    case SituationClass::HeadOnStarboardOccupied:
+    case SituationClass::HeadOnCrossingBoundary:
+    case SituationClass::StandOnRemoteDuty:
+      return drawProbe(d, cfg, c, tcpa());
     default:
       break;
   }
@@ -250,7 +300,8 @@ std::string description(SituationClass c, uint64_t seed, uint64_t index, const S
                      strFormat(", %.2f kn on %05.1f.", mpsToKnots(own.speed), radToDeg(own.course));
   for (size_t i = 0; i < draws.size(); ++i) {
     const TargetDraw& t = draws[i];
-    text += " ts" + std::to_string(i + 1) + ": " + describe(t.kind) + ", " + behaviourText(t.behaviour) +
+    text += " ts" + std::to_string(i + 1) + ": " + (t.what.empty() ? describe(t.kind) : t.what.c_str()) +
+            ", " + behaviourText(t.behaviour) +
             strFormat("; speed ratio %.2f, CPA %.2f nm after %.1f min if both hold on.", t.ratio,
                       t.dcpa / kMetresPerNauticalMile, t.tcpa / 60.0);
   }
@@ -297,6 +348,13 @@ Draft drawScenario(Draw& d, const GeneratorConfig& cfg, SituationClass c, uint64
   s.own.goal = s.own.position + courseSpeedToVelocity(s.own.course, route);
   s.duration = 60.0 * std::ceil((1.4 * route / s.own.speed + 300.0) / 60.0);
   std::string land;
+  if (c == SituationClass::HeadOnStarboardOccupied && out.draws.size() == 1) {
+    s.min_obstacle_clearance = cfg.obstacle_clearance_m;
+    const double offset = d.uniform(0.6, 1.2) * kMetresPerNauticalMile;
+    s.obstacles.push_back(coast(d, s.own, route, 1.0, offset, "coast"));
+    land = strFormat(" A coast %.1f nm to starboard of the route (clearance %.0f m).",
+                     offset / kMetresPerNauticalMile, cfg.obstacle_clearance_m);
+  }
   if (c == SituationClass::Coastal) {
     s.min_obstacle_clearance = cfg.obstacle_clearance_m;
     const double nm = kMetresPerNauticalMile;
@@ -344,8 +402,9 @@ std::string checkGeometry(const GeneratorConfig& cfg, const Scenario& s,
     for (size_t j = 0; j < i; ++j)
       if ((s.targets[j].position - t.position).norm() < min_start)
         return "two targets start too close";
-    if (classifyEncounter(own, t, computeCpa(own, t), ColregsConfig{}).encounter !=
-        expectedEncounter(draws[i].kind))
+    if (draws[i].check_encounter &&
+        classifyEncounter(own, t, computeCpa(own, t), ColregsConfig{}).encounter !=
+            expectedEncounter(draws[i].kind))
       return "encounter classified otherwise";
   }
   for (const auto& o : s.obstacles)
@@ -408,11 +467,12 @@ bool manoeuvreKeepsClear(const Scenario& s, double act_time, double course_chang
 
 }  // namespace
 
-bool manoeuvreExists(const Scenario& s, double act_time, double min_separation, double clearance, double dt) {
+bool manoeuvreExists(const Scenario& s, double act_time, double min_separation, double clearance, double dt,
+                     bool port_too) {
   // Smallest alterations first, starboard before port, speed kept before reduced: the first success ends it.
   for (int step = 0; step <= 12; ++step)
     for (double side : {1.0, -1.0}) {
-      if (step == 0 && side < 0.0)
+      if ((step == 0 || !port_too) && side < 0.0)
         continue;
       for (double speed_factor : {1.0, 0.5, 0.0})
         if (manoeuvreKeepsClear(s, act_time, side * degToRad(10.0 * step), speed_factor, min_separation,
@@ -441,10 +501,14 @@ GeneratedScenario generateScenario(const GeneratorConfig& cfg, SituationClass si
       reason = checkGeometry(cfg, g.scenario, draft.draws);
     if (reason.empty())
       reason = checkTraffic(cfg, g.scenario);
+    const double clearance = g.scenario.obstacles.empty() ? 0.0 : cfg.obstacle_clearance_m;
     if (reason.empty() &&
-        !manoeuvreExists(g.scenario, draft.act_time, cfg.min_separation_m,
-                         g.scenario.obstacles.empty() ? 0.0 : cfg.obstacle_clearance_m, cfg.check_dt))
+        !manoeuvreExists(g.scenario, draft.act_time, cfg.min_separation_m, clearance, cfg.check_dt))
       reason = "no manoeuvre keeps the minimum separation";
+    // The starboard side is occupied, not closed: a turn to starboard or a speed reduction still works.
+    if (reason.empty() && situation == SituationClass::HeadOnStarboardOccupied &&
+        !manoeuvreExists(g.scenario, draft.act_time, cfg.min_separation_m, clearance, cfg.check_dt, false))
+      reason = "no starboard manoeuvre keeps the minimum separation";
     if (reason.empty())
       return g;
     ++g.refused[reason];
@@ -454,10 +518,19 @@ GeneratedScenario generateScenario(const GeneratorConfig& cfg, SituationClass si
 }
 
 const std::vector<SituationClass>& allSituationClasses() {
-  static const std::vector<SituationClass> all{
-      SituationClass::HeadOn,     SituationClass::CrossingGiveWay, SituationClass::CrossingStandOn,
-      SituationClass::Overtaking, SituationClass::BeingOvertaken,  SituationClass::RuleBreaker,
-      SituationClass::Multi,      SituationClass::Converging,      SituationClass::Coastal};
+  static const std::vector<SituationClass> all{SituationClass::HeadOn,
+                                               SituationClass::CrossingGiveWay,
+                                               SituationClass::CrossingStandOn,
+                                               SituationClass::Overtaking,
+                                               SituationClass::BeingOvertaken,
+                                               SituationClass::RuleBreaker,
+                                               SituationClass::Multi,
+                                               SituationClass::Converging,
+                                               SituationClass::Coastal,
+                                               SituationClass::OffsetHeadOn,
+                                               SituationClass::HeadOnStarboardOccupied,
+                                               SituationClass::HeadOnCrossingBoundary,
+                                               SituationClass::StandOnRemoteDuty};
   return all;
 }
 
@@ -480,9 +553,17 @@ const char* toString(SituationClass c) {
     case SituationClass::Converging:
       return "converging";
     case SituationClass::Coastal:
+      return "coastal";
+    case SituationClass::OffsetHeadOn:
+      return "offset_head_on";
+    case SituationClass::HeadOnStarboardOccupied:
+      return "head_on_starboard_occupied";
+    case SituationClass::HeadOnCrossingBoundary:
+      return "head_on_crossing_boundary";
+    case SituationClass::StandOnRemoteDuty:
       break;
   }
-  return "coastal";
+  return "stand_on_remote_duty";
 }
 
 std::optional<SituationClass> situationClassFromString(const std::string& name) {

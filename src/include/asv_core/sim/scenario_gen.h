@@ -24,7 +24,12 @@ namespace asv {
 // CrossingStandOn (target from port gives way), Overtaking (own overtakes), BeingOvertaken (a faster target
 // from astern gives way), RuleBreaker (a target that should give way stands on or turns to port).
 // Several targets: Multi (2-5, independent CPA times), Converging (2-5 CPAs within a few minutes of
-// each other). Coastal: 1-3 targets with a coast on one side or a channel.
+// each other). Coastal: 1-3 targets with a coast on one side or a channel. The families that probe the
+// referee's judgement (docs/evaluation.md): OffsetHeadOn (DCPA 0.3-0.8 nm either side; the target gives
+// way or never acts), HeadOnStarboardOccupied (head-on with an anchored ship, a slow ship or a coast on
+// the starboard side, a starboard manoeuvre still open), HeadOnCrossingBoundary (8-35 deg off the
+// reciprocal, either bow), StandOnRemoteDuty (crossing from port, and a slow ship ahead the own ship
+// overtakes 0.5-0.9 nm abeam 20-30 min out).
 enum class SituationClass : uint8_t {
   HeadOn,
   CrossingGiveWay,
@@ -34,7 +39,11 @@ enum class SituationClass : uint8_t {
   RuleBreaker,
   Multi,
   Converging,
-  Coastal
+  Coastal,
+  OffsetHeadOn,
+  HeadOnStarboardOccupied,
+  HeadOnCrossingBoundary,
+  StandOnRemoteDuty
 };
 const std::vector<SituationClass>& allSituationClasses();
 const char* toString(SituationClass c);
@@ -76,8 +85,9 @@ GeneratedScenario generateScenario(const GeneratorConfig& cfg, SituationClass si
 
 // Whether some manoeuvre of the own ship (course change to either side up to 120 deg, speed kept,
 // halved or stopped), made at `act_time` after holding course and speed until then, keeps every
-// target at least `min_separation` away and, with obstacles, keeps `clearance` off them.
+// target at least `min_separation` away and, with obstacles, keeps `clearance` off them. port_too
+// false: only to starboard (or no course change).
 bool manoeuvreExists(const Scenario& s, double act_time, double min_separation, double clearance,
-                     double dt = 1.0);
+                     double dt = 1.0, bool port_too = true);
 
 }  // namespace asv
