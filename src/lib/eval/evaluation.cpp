@@ -25,13 +25,11 @@ double sideOf(const Eigen::Vector2d& u, const Eigen::Vector2d& rel) {
   return u.x() * rel.y() - u.y() * rel.x();
 }
 
-// The least distance between two ships moving at constant velocities for `duration` seconds from a and b.
+// The least distance between two ships moving at constant velocities for `duration` seconds from a and b:
+// the distance from the origin to the segment their relative position sweeps.
 double closestOnLeg(const Eigen::Vector2d& a, const Eigen::Vector2d& va, const Eigen::Vector2d& b,
                     const Eigen::Vector2d& vb, double duration) {
-  const Eigen::Vector2d r = b - a, v = vb - va;
-  const double vv = v.squaredNorm();
-  const double t = vv > 1e-12 ? std::clamp(-r.dot(v) / vv, 0.0, duration) : 0.0;
-  return (r + v * t).norm();
+  return pointSegmentDistance(Eigen::Vector2d::Zero(), b - a, b - a + (vb - va) * duration);
 }
 
 }  // namespace
