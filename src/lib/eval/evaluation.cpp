@@ -310,6 +310,7 @@ struct RunRecorder::Passage {
   bool swing = false;           // kport is a swing across the entry course, not the first alteration
   double swing_from_deg = 0.0;  // [deg] the starboard alteration before the swing
   size_t own = 0, target = 0;   // the ships' indices (set by evaluatePair)
+  const std::vector<Manoeuvre>* manoeuvres = nullptr;  // the own ship's, over the run (evaluatePair)
 };
 
 namespace {
@@ -512,7 +513,7 @@ void RunRecorder::judgeSuccession(const Passage& p, TargetResult& r, double& fac
   const double t0 = p.both[p.ke].first->t, t1 = p.both[p.kc].first->t;
   int run = 0, sense = 0;
   std::string sizes;
-  for (const Manoeuvre& m : manoeuvres(tracks_[p.own])) {
+  for (const Manoeuvre& m : *p.manoeuvres) {
     if (m.time < t0 || m.time > t1)
       continue;
     const int s = m.course_change > 0.0 ? 1 : -1;
@@ -601,10 +602,8 @@ bool RunRecorder::keepsClear(const Passage& p, const Point& own, const Eigen::Ve
   for (size_t k = 0; k < tracks_.size(); ++k) {
     if (k == p.own)
       continue;
-    const auto& pts = tracks_[k].points;
-    const auto at = std::lower_bound(pts.begin(), pts.end(), own.t - 1e-6,
-                                     [](const Point& q, double t) { return q.t < t; });
-    if (at == pts.end() || std::fabs(at->t - own.t) > 1e-6 || !at->active)
+    const Point* at = sampleAt(k, own.t);
+    if (!at)
       continue;
     const Eigen::Vector2d tv = at->s.velocity();
     const Eigen::Vector2d t_bend = at->s.position + tv * hold;
@@ -625,15 +624,17 @@ std::string RunRecorder::forcedNote(const Passage& p) const {
                       : "; not forced: " + open;
 }
 
+// Ship k's sample at time t, or nullptr when she has none then (or was not in the water).
+const RunRecorder::Point* RunRecorder::sampleAt(size_t k, double t) const {
+  const auto& pts = tracks_[k].points;
+  const auto it =
+      std::lower_bound(pts.begin(), pts.end(), t - 1e-6, [](const Point& q, double tt) { return q.t < tt; });
+  return it == pts.end() || std::fabs(it->t - t) > 1e-6 || !it->active ? nullptr : &*it;
+}
+
 // The CPA of ships i and j from their samples at time t (nullopt when either is not there then).
 std::optional<Cpa> RunRecorder::cpaAt(size_t i, size_t j, double t) const {
-  auto at = [&](size_t k) -> const Point* {
-    const auto& pts = tracks_[k].points;
-    const auto it = std::lower_bound(pts.begin(), pts.end(), t - 1e-6,
-                                     [](const Point& q, double tt) { return q.t < tt; });
-    return it == pts.end() || std::fabs(it->t - t) > 1e-6 || !it->active ? nullptr : &*it;
-  };
-  const Point *a = at(i), *b = at(j);
+  const Point *a = sampleAt(i, t), *b = sampleAt(j, t);
   if (!a || !b)
     return std::nullopt;
   return computeCpa(a->s, b->s);
@@ -752,7 +753,8 @@ std::vector<RunRecorder::GiveWayDuty> RunRecorder::giveWayDuties(
 }
 
 TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const PairHistory& h,
-                                       const std::vector<GiveWayDuty>& duties) const {
+                                       const std::vector<GiveWayDuty>& duties,
+                                       const std::vector<Manoeuvre>& manoeuvres) const {
   TargetResult r;
   r.name = info_.ships[j].name;
   r.min_distance = min_dist_[i][j] < kFar ? min_dist_[i][j] : kNaN;
@@ -784,6 +786,7 @@ TargetResult RunRecorder::evaluatePair(size_t i, size_t j, const PairHistory& h,
   Passage p = passage(both, h.cpas, h.ke);
   p.own = i;
   p.target = j;
+  p.manoeuvres = &manoeuvres;
   r.encounter = p.g.encounter;
   r.role = p.g.role;
   r.first_side = p.first_side;
@@ -832,7 +835,7 @@ ShipResult RunRecorder::evaluateShip(size_t i) const {
   for (size_t j = 0; j < tracks_.size(); ++j) {
     if (j == i || tracks_[j].points.empty())
       continue;
-    s.targets.push_back(evaluatePair(i, j, pairs[j], duties));
+    s.targets.push_back(evaluatePair(i, j, pairs[j], duties, s.manoeuvres));
     const TargetResult& t = s.targets.back();
     safety_sum += t.score;
     if (t.evaluated) {

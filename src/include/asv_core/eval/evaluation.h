@@ -255,8 +255,8 @@ private:
     size_t ke = 0;
   };
   PairHistory pairHistory(size_t i, size_t j) const;
-  TargetResult evaluatePair(size_t i, size_t j, const PairHistory& h,
-                            const std::vector<GiveWayDuty>& duties) const;
+  TargetResult evaluatePair(size_t i, size_t j, const PairHistory& h, const std::vector<GiveWayDuty>& duties,
+                            const std::vector<Manoeuvre>& manoeuvres) const;
   Instants commonInstants(size_t i, size_t j) const;
   size_t entryInstant(const Instants& both, std::vector<Cpa>& cpas) const;
   // The ships ship i had to keep out of the way of (pairs[j]: ship j's history with ship i).
@@ -280,6 +280,7 @@ private:
   std::string forcedNote(const Passage& p) const;
   void judgeStandOn(const Passage& p, TargetResult& r, double& factor,
                     const std::vector<GiveWayDuty>& duties) const;
+  const Point* sampleAt(size_t k, double t) const;
   std::optional<Cpa> cpaAt(size_t i, size_t j, double t) const;
   std::string dutyNotReal(const Passage& p, const GiveWayDuty& d, double t_action) const;
   void finishScore(TargetResult& r, double factor) const;
