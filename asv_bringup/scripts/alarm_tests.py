@@ -36,6 +36,11 @@ from asv_msgs.msg import Alarm, Plan, RiskAssessment
 from rosgraph_msgs.msg import Clock
 
 RATE = 3.0
+# [s, simulated] the run's length: the five faults take about 75 simulated seconds (each: detection,
+# 1 s of wall time hung, respawn, the alarm cleared, 2 s to settle, at RATE); after them the test only
+# waits for the run to end, so twice that is enough, and the test fails, naming it, if the faults
+# outlast the run.
+SIM_TIME = 160.0
 # stage killed -> (node that detects it, the input it names, detection limit [s, simulated])
 FAULTS = [
     ("/tracker", "/risk_node", "/targets", 2.0),
@@ -53,6 +58,7 @@ class Alarms(unittest.TestCase):
         self.alarms = []  # (wall, msg)
         self.plans = []   # (wall, sim, msg)
         self.sim_time = 0.0
+        self.sim_start = None  # the run's first /clock (the simulator's epoch)
         self.risks = []   # (wall, msg)
         self.subs = [
             rospy.Subscriber("/alarms", Alarm, self.on_alarm, queue_size=200),
@@ -75,6 +81,8 @@ class Alarms(unittest.TestCase):
 
     def on_clock(self, m):
         self.sim_time = m.clock.to_sec()
+        if self.sim_start is None:
+            self.sim_start = self.sim_time
 
     def wait(self, cond, timeout):
         deadline = time.monotonic() + timeout
@@ -140,7 +148,7 @@ class Alarms(unittest.TestCase):
         result = os.path.join(out, "result.json")
         launch = subprocess.Popen(
             ["roslaunch", "asv_bringup", "scenario.launch", "scenario:=crossing_give_way", "planner:=mopso",
-             "rate:=%g" % RATE, "max_sim_time:=400", "start_delay:=2.0", "out:=" + out, "result:=" + result,
+             "rate:=%g" % RATE, "max_sim_time:=%g" % SIM_TIME, "start_delay:=2.0", "out:=" + out, "result:=" + result,
              "geojson:=", "output:=log"],
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         try:
@@ -152,6 +160,9 @@ class Alarms(unittest.TestCase):
             for stage, detector, topic, limit in FAULTS:
                 self.fault(stage, detector, topic, limit)
                 time.sleep(2.0)  # the pipeline settles before the next fault
+            elapsed = self.sim_time - (self.sim_start or 0.0)
+            print("stage_alarms: the faults ended at t = %.0f s (simulated) of %.0f" % (elapsed, SIM_TIME))
+            self.assertLess(elapsed, SIM_TIME - 10.0, "the faults outlasted the run: raise SIM_TIME")
             log, _ = launch.communicate(timeout=300)
         finally:
             if launch.poll() is None:

@@ -578,9 +578,12 @@ int SimNode::finishRun() {
     lockstepPhases(lockstep_round_step_ + 1, false);
   if (params_.shutdown_at_end) {
     // Let the last messages (END event, final state) reach the subscribers before leaving, and the node
-    // named by linger_for (the evaluator) finish its work and leave.
+    // named by linger_for (the evaluator) finish its work and leave. In lockstep every participant has
+    // taken the final state, and the evaluator's leaving says it took the END event: a short floor (for
+    // a recorder's buffers) is enough; free-running, nothing confirms delivery, so 1 s.
     const ros::WallTime start = ros::WallTime::now();
-    const ros::WallTime linger = start + ros::WallDuration(1.0);
+    const bool confirmed = params_.lockstep && !params_.linger_for.empty();
+    const ros::WallTime linger = start + ros::WallDuration(confirmed ? 0.2 : 1.0);
     const ros::WallTime latest = start + ros::WallDuration(std::max(1.0, params_.linger_max));
     auto waiting = [&]() {
       const ros::WallTime now = ros::WallTime::now();
