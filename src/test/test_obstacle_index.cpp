@@ -85,3 +85,31 @@ TEST(PointHazard, AnAidIsAnOctagonRoundItsClearanceCircle) {
   // Radius 0 still gives a point an inside (1 m).
   EXPECT_TRUE(asv::insideObstacle(asv::pointHazard("aid:2", c, 0.0), c + Eigen::Vector2d(0.5, 0.0)));
 }
+
+// A logged place on chart land, moved to the nearest water (asv_scenario_from_ais): by hand on a pier
+// 200 m wide (x from 0 to 200) and 1000 m long (y from 0 to 1000), with an islet 30 m east of it.
+TEST(NearestWater, OutThroughTheNearestEdgeThatLeadsToWater) {
+  std::vector<asv::StaticObstacle> land{
+      {"pier", {Vector2d(0, 0), Vector2d(200, 0), Vector2d(200, 1000), Vector2d(0, 1000)}},
+      {"islet", {Vector2d(230, 400), Vector2d(300, 400), Vector2d(300, 600), Vector2d(230, 600)}}};
+  // Afloat already: unchanged.
+  EXPECT_EQ(*asv::nearestWater(land, Vector2d(-5, 500), 250.0, 10.0), Vector2d(-5, 500));
+  // 40 m inside the west edge (x = 0): 10 m past it, 50 m from where she was.
+  const auto west = asv::nearestWater(land, Vector2d(40, 100), 250.0, 10.0);
+  ASSERT_TRUE(west);
+  EXPECT_NEAR((*west - Vector2d(-10, 100)).norm(), 0.0, 1e-9);
+  // 20 m inside the east edge: 10 m past it is x = 210, in the 30 m gap before the islet, afloat.
+  const auto gap = asv::nearestWater(land, Vector2d(180, 500), 250.0, 10.0);
+  ASSERT_TRUE(gap);
+  EXPECT_NEAR((*gap - Vector2d(210, 500)).norm(), 0.0, 1e-9);
+  // A quay drawn as a second polygon along the whole east edge (x from 200 to 260): out through it,
+  // 80 m to its far edge and 10 m past (90 m), nearer than the pier's west edge (180 m).
+  land[1] = {"quay", {Vector2d(200, 0), Vector2d(260, 0), Vector2d(260, 1000), Vector2d(200, 1000)}};
+  const auto quay = asv::nearestWater(land, Vector2d(180, 500), 250.0, 10.0);
+  ASSERT_TRUE(quay);
+  EXPECT_NEAR((*quay - Vector2d(270, 500)).norm(), 0.0, 1e-9);
+  // The pier's middle (without the quay) is 100 m from its long edges: deeper than a 90 m accuracy.
+  land.pop_back();
+  EXPECT_FALSE(asv::nearestWater(land, Vector2d(100, 500), 90.0, 10.0));
+  EXPECT_TRUE(asv::nearestWater(land, Vector2d(100, 500), 100.0, 10.0));
+}

@@ -193,7 +193,8 @@ TEST(ScenarioFromAis, WindowBecomesTargetsPlacedByInterpolation) {
   ASSERT_EQ(back.targets[0].track.size(), 2u);
   EXPECT_NEAR((back.targets[0].track[1].position - north.track[1].position).norm(), 0.0, 0.1);
   EXPECT_EQ(back.targets[0].mmsi, 111111111u);
-  // A berth the chart draws as land: the stopped vessel on it is left out, the moving one is kept.
+  // A berth the chart draws as land: the stopped vessel on it is left out (not moved: a moored ship
+  // would become a phantom in the fairway), the moving one is kept.
   const Eigen::Vector2d berth = still.position;
   o.land = {{"land 1",
              {berth + Eigen::Vector2d(-50, -50), berth + Eigen::Vector2d(50, -50),
@@ -202,6 +203,37 @@ TEST(ScenarioFromAis, WindowBecomesTargetsPlacedByInterpolation) {
   ASSERT_EQ(on_land.scenario.targets.size(), 1u);
   EXPECT_EQ(on_land.scenario.targets[0].name, "north_bound");
   EXPECT_EQ(on_land.skipped.at("stopped on chart land (a berth the chart draws as land)"), 1u);
+  EXPECT_TRUE(on_land.moved_off_land.empty());
+  // The own ship's start 30 m inside a quay (x > 30 m east of it is land): moved 30 m west and 60 m
+  // past (half her 120 m length), heading for the goal from there; her goal on land deeper than the
+  // accuracy is an error that names it.
+  const Eigen::Vector2d start = on_land.scenario.own.position;
+  o.land = {{"quay",
+             {start + Eigen::Vector2d(-30, -500), start + Eigen::Vector2d(500, -500),
+              start + Eigen::Vector2d(500, 100), start + Eigen::Vector2d(-30, 100)}}};
+  const AisScenarioResult own = scenarioFromAis(log, o);
+  EXPECT_NEAR((own.scenario.own.position - (start + Eigen::Vector2d(-90, 0))).norm(), 0.0, 1e-6);
+  EXPECT_EQ(own.moved_off_land.at(0), "own start moved 90 m off chart land");
+  EXPECT_NEAR(own.scenario.own.course,
+              wrapTwoPi(std::atan2(own.scenario.own.goal->x() - own.scenario.own.position.x(),
+                                   own.scenario.own.goal->y() - own.scenario.own.position.y())),
+              1e-12);
+  const Eigen::Vector2d goal = *own.scenario.own.goal;  // 1000 m inside a square island
+  o.land[0].polygon = {goal + Eigen::Vector2d(-1000, -1000), goal + Eigen::Vector2d(1000, -1000),
+                       goal + Eigen::Vector2d(1000, 1000), goal + Eigen::Vector2d(-1000, 1000)};
+  EXPECT_THROW(
+      {
+        try {
+          scenarioFromAis(log, o);
+        } catch (const std::invalid_argument& e) {
+          EXPECT_NE(std::string(e.what()).find(
+                        "the own ship's goal is on chart land with no water within its accuracy"),
+                    std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      std::invalid_argument);
 }
 
 TEST(ScenarioFromAis, OwnShipTakesALoggedVesselsPlace) {

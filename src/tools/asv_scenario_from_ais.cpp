@@ -5,6 +5,7 @@
 #include <iostream>
 #include <string>
 
+#include "asv_core/common/format.h"
 #include "asv_core/common/geometry.h"
 #include "asv_core/sim/scenario_from_ais.h"
 #include "asv_core/sim/simulation.h"
@@ -51,13 +52,16 @@ const char* const kUsage =
     "  --charts SRC         land: gshhg (default), a chart file (.geojson, .shp, S-57 .000) or none\n"
     "  --chart-resolution R GSHHG resolution (default full)\n"
     "  --clearance M        obstacle clearance written with the charts (default 100)\n"
+    "  --land-accuracy M    an own start or goal this far or less inside the chart's land is moved to\n"
+    "                       the nearest water, with a warning (default 250, GSHHG's scale; 0: never)\n"
     "  --chart-cache DIR    chart extraction cache used to check the file (default $ASV_CHART_CACHE or\n"
     "                       ~/.cache/asv/charts; none: no cache)\n"
     "  --quiet              no summary on stderr\n"
     "  -h, --help           this help\n"
     "\n"
     "The file written is read back by the scenario loader with its land before the tool succeeds: an own\n"
-    "start or goal on land is an error. Exit status: 0, 1 on a bad log, window or own ship, 2 on a usage\n"
+    "start or goal on land (deeper than --land-accuracy) is an error. Exit status: 0, 1 on a bad log, window "
+    "or own ship, 2 on a usage\n"
     "error.\n";
 
 struct Args {
@@ -98,6 +102,8 @@ bool numberOption(AisScenarioOptions& o, const std::string& k, double x) {
     o.min_separation_m = x;
   else if (k == "--clearance" && x > 0)
     o.clearance_m = x;
+  else if (k == "--land-accuracy" && x >= 0 && x <= 5000)
+    o.land_accuracy_m = x;
   else
     return false;
   return true;
@@ -161,19 +167,25 @@ std::string baseName(const std::string& path) {
   return dot == std::string::npos ? b : b.substr(0, dot);
 }
 
-// The file as the stack will read it, with its land: the own ship must start and end afloat. Returns
-// the land (none without charts).
-std::vector<StaticObstacle> checkLoads(const std::string& yaml, const Args& a) {
+// The file as the stack will read it, with its land; when `afloat`, the own ship must start and end
+// off it. Returns the land (none without charts).
+std::vector<StaticObstacle> checkLoads(const std::string& yaml, const Args& a, bool afloat) {
   Scenario s = parseScenario(yaml, a.out);
   Simulation check(s);  // what the loader leaves to the simulator: an unknown --own-model preset
   if (!s.charts)
     return {};
   ChartOptions co;
   co.cache_dir = a.cache;
+  co.own_afloat = afloat;
   loadCharts(s, co);
   for (const auto& ob : s.obstacles)
-    if (pointInPolygon(ob.polygon, *s.own.goal))
-      throw std::invalid_argument("the own ship's goal is on land (" + ob.name + "): choose another");
+    for (const auto& [what, p] : {std::pair{"start", s.own.position}, std::pair{"goal", *s.own.goal}})
+      if (afloat && insideObstacle(ob, p))
+        throw std::invalid_argument(
+            std::string("the own ship's ") + what + " is on land (" + ob.name +
+            strFormat(") with no water within the chart's accuracy (--land-accuracy %.0f m): "
+                      "choose another",
+                      a.o.land_accuracy_m));
   return s.obstacles;
 }
 
@@ -195,10 +207,13 @@ int run(Args& a) {
   }
   // Twice: the first scenario gives the chart's area, whose land then leaves out ships at berths.
   AisScenarioResult r = scenarioFromAis(log, a.o);
-  a.o.land = checkLoads(scenarioToYaml(r.scenario), a);
+  a.o.land = checkLoads(scenarioToYaml(r.scenario), a, false);
   r = scenarioFromAis(log, a.o);
   const std::string yaml = scenarioToYaml(r.scenario);
-  checkLoads(yaml, a);
+  checkLoads(yaml, a, true);
+  // A logged place moved off the chart's land is the chart's error or the log's: said even with --quiet.
+  for (const std::string& m : r.moved_off_land)
+    std::cerr << "asv_scenario_from_ais: warning: " << m << "\n";
   std::ofstream out(a.out);
   out << yaml;
   if (!out)
@@ -212,6 +227,8 @@ int run(Args& a) {
             << " replay their tracks, " << r.stationary << " stopped\n";
   for (const auto& [why, n] : r.skipped)
     std::cerr << "  left out " << n << ": " << why << "\n";
+  if (!r.moved_off_land.empty())
+    std::cerr << "  moved off chart land: " << r.moved_off_land.size() << " place(s)\n";
   std::cerr << "  written " << a.out << "\n";
   return 0;
 }

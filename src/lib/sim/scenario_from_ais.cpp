@@ -391,6 +391,39 @@ ScenarioShip ownShip(const OwnPlace& p, const AisScenarioOptions& o, const Local
   return own;
 }
 
+bool afloatOnChart(const std::vector<StaticObstacle>& land, const Eigen::Vector2d& p) {
+  return std::none_of(land.begin(), land.end(),
+                      [&](const StaticObstacle& l) { return insideObstacle(l, p); });
+}
+
+// A logged place on the chart's land by at most land_accuracy_m, moved to the nearest water (half the
+// ship's length, at least 10 m, past the edge) and reported; false when it lies deeper inland.
+bool moveAfloat(Eigen::Vector2d& p, double length, const std::string& who, const AisScenarioOptions& o,
+                AisScenarioResult& res) {
+  const auto w = nearestWater(o.land, p, o.land_accuracy_m, std::max(10.0, 0.5 * length));
+  if (!w)
+    return false;
+  const double moved = (*w - p).norm();
+  if (moved > 0.0)
+    res.moved_off_land.push_back(strFormat("%s moved %.0f m off chart land", who.c_str(), moved));
+  p = *w;
+  return true;
+}
+
+// The own ship's start and goal off the chart's land (an error when deeper than its accuracy); her
+// course follows a moved start or goal unless it was given or logged.
+void ownAfloat(ScenarioShip& own, const OwnPlace& place, const AisScenarioOptions& o,
+               AisScenarioResult& res) {
+  for (auto [what, p] : {std::pair{"start", &own.position}, std::pair{"goal", &*own.goal}})
+    if (!moveAfloat(*p, own.length, std::string("own ") + what, o, res))
+      throw std::invalid_argument(std::string("the own ship's ") + what +
+                                  strFormat(" is on chart land with no water within its accuracy (%.0f m): "
+                                            "choose another",
+                                            o.land_accuracy_m));
+  if (!place.course_deg)
+    own.course = wrapTwoPi(courseOf(*own.goal - own.position));
+}
+
 // Two ships closer at the start than the scenario format allows (half their lengths summed, 10 m).
 bool overlaps(const ScenarioShip& s, const Scenario& sc) {
   auto clash = [&](const ScenarioShip& o) {
@@ -426,6 +459,7 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
   sc.min_separation = o.min_separation_m;
   const LocalFrame frame = sc.frame();
   sc.own = ownShip(place, o, frame);
+  ownAfloat(sc.own, place, o, res);
   std::size_t refused_fixes = 0;
   const auto vessels = byVessel(log, frame, knotsToMps(o.max_jump_speed_kn), refused_fixes);
   std::set<std::string> names{"own"};
@@ -458,9 +492,7 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
       continue;
     }
     const bool still = stationary(v, s, o);
-    if (still && std::any_of(o.land.begin(), o.land.end(), [&](const StaticObstacle& l) {
-          return pointInPolygon(l.polygon, s.position);
-        })) {
+    if (still && !afloatOnChart(o.land, s.position)) {
       ++res.skipped["stopped on chart land (a berth the chart draws as land)"];
       continue;
     }

@@ -30,7 +30,7 @@ void loadCharts(Scenario& s, const ChartOptions& options) {
     throw ScenarioError(s.source + ": 'charts': " + e.what());
   }
   for (size_t i = 0; i < land.size(); ++i) {
-    if (pointInPolygon(land[i], s.own.position))
+    if (options.own_afloat && pointInPolygon(land[i], s.own.position))
       throw ScenarioError(s.source + ": 'charts': the own ship starts on land (" + spec.source + ")");
     s.obstacles.push_back({"land " + std::to_string(i + 1), std::move(land[i]), nullptr});
   }

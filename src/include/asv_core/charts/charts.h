@@ -50,6 +50,9 @@ struct ChartOptions {
   std::string source;     // empty: the scenario's own charts.source
   std::string cache_dir;  // empty: defaultChartCacheDir(); "none": no cache
   bool load = true;       // false: parse the charts key only (a node that needs the origin alone)
+  // An own ship starting on the land is an error; false: asv_scenario_from_ais, which reads the land
+  // first to move a logged start off it (within the chart's accuracy).
+  bool own_afloat = true;
 
   static ChartOptions fromParams(const ParamMap& params);
 };

@@ -75,10 +75,17 @@ struct AisScenarioOptions {
   std::optional<GeoPoint> origin;   // default: midway between the own ship's start and goal
   std::optional<ChartSpec> charts;  // radius_m 0: covers the route plus radius_m
   double clearance_m = 100.0;       // the obstacle clearance written with charts
-  // Land in the scenario's frame (the charts' polygons, loaded by the caller): a stopped vessel whose
-  // place is on it is left out. Berths are land on a small-scale chart (GSHHG draws piers as land), and
-  // the land already keeps the own ship away from them.
+  // Land in the scenario's frame (the charts' polygons, loaded by the caller). The own ship's start or
+  // goal on it by no more than land_accuracy_m is taken as afloat: moved to the nearest water, half her
+  // length (at least 10 m) past the chart's edge, and reported in moved_off_land; deeper inland it is
+  // an error. A stopped vessel on it is left out: a berth on a pier the chart draws as land (GSHHG
+  // does), which the land already keeps the own ship away from; moved, a moored ship would become a
+  // phantom in the fairway (in New York, up to 235 m off the chart's edge, two onto one place).
   std::vector<StaticObstacle> land;
+  // [m] our choice for GSHHG, which states no accuracy: its full-resolution shoreline comes from World
+  // Vector Shoreline, digitised from charts of about 1:250,000, where 1 mm on paper is 250 m. With a
+  // finer chart of the user's, set it lower (--land-accuracy).
+  double land_accuracy_m = 250.0;
 };
 
 struct AisScenarioResult {
@@ -86,6 +93,8 @@ struct AisScenarioResult {
   std::size_t vessels_seen = 0;  // distinct MMSIs reporting in the window
   std::size_t tracks = 0, stationary = 0;      // targets written of each kind
   std::map<std::string, std::size_t> skipped;  // vessels left out, by reason
+  // Logged places moved off chart land: who, how far and where to ("own start moved 84 m off land").
+  std::vector<std::string> moved_off_land;
 };
 
 // Builds the scenario. Throws std::invalid_argument for options that cannot make one (no own start or

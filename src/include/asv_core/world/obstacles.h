@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,5 +48,12 @@ double obstacleLengthInside(const StaticObstacle& o, const Eigen::Vector2d& a, c
 // does not fit inside a hull).
 double polygonObstacleDistance(const Polygon& outline, const StaticObstacle& o,
                                double needed = std::numeric_limits<double>::infinity());
+
+// A position that the chart puts on land, moved to the nearest water: p itself when no obstacle holds
+// it; else, of the points `margin` beyond an obstacle's edge straight out from p, through an edge at
+// most max_depth from p, the nearest that no obstacle holds; nullopt when there is none (p lies deeper
+// inland than max_depth).
+std::optional<Eigen::Vector2d> nearestWater(const std::vector<StaticObstacle>& land, const Eigen::Vector2d& p,
+                                            double max_depth, double margin);
 
 }  // namespace asv
