@@ -391,11 +391,6 @@ ScenarioShip ownShip(const OwnPlace& p, const AisScenarioOptions& o, const Local
   return own;
 }
 
-bool afloatOnChart(const std::vector<StaticObstacle>& land, const Eigen::Vector2d& p) {
-  return std::none_of(land.begin(), land.end(),
-                      [&](const StaticObstacle& l) { return insideObstacle(l, p); });
-}
-
 // A logged place on the chart's land by at most land_accuracy_m, moved to the nearest water (half the
 // ship's length, at least 10 m, past the edge) and reported; false when it lies deeper inland.
 bool moveAfloat(Eigen::Vector2d& p, double length, const std::string& who, const AisScenarioOptions& o,
@@ -492,7 +487,7 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
       continue;
     }
     const bool still = stationary(v, s, o);
-    if (still && !afloatOnChart(o.land, s.position)) {
+    if (still && insideAnyObstacle(o.land, s.position)) {
       ++res.skipped["stopped on chart land (a berth the chart draws as land)"];
       continue;
     }

@@ -64,40 +64,27 @@ double polygonObstacleDistance(const Polygon& outline, const StaticObstacle& o, 
   return d;
 }
 
-namespace {
-
-// The point of segment ab nearest to p.
-Eigen::Vector2d nearestOnSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                                 const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double u = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return a + u * ab;
+bool insideAnyObstacle(const std::vector<StaticObstacle>& obstacles, const Eigen::Vector2d& p) {
+  return std::any_of(obstacles.begin(), obstacles.end(),
+                     [&](const StaticObstacle& o) { return insideObstacle(o, p); });
 }
-
-bool afloat(const std::vector<StaticObstacle>& land, const Eigen::Vector2d& p) {
-  return std::none_of(land.begin(), land.end(),
-                      [&](const StaticObstacle& o) { return insideObstacle(o, p); });
-}
-
-}  // namespace
 
 std::optional<Eigen::Vector2d> nearestWater(const std::vector<StaticObstacle>& land, const Eigen::Vector2d& p,
                                             double max_depth, double margin) {
-  if (afloat(land, p))
+  if (!insideAnyObstacle(land, p))
     return p;
   // Candidates: past each edge within reach, straight out from p through its nearest point there.
   std::vector<std::pair<double, Eigen::Vector2d>> out;
   for (const StaticObstacle& o : land)
     for (size_t i = 0, j = o.polygon.size() - 1; i < o.polygon.size(); j = i++) {
-      const Eigen::Vector2d c = nearestOnSegment(p, o.polygon[j], o.polygon[i]);
+      const Eigen::Vector2d c = nearestPointOnSegment(p, o.polygon[j], o.polygon[i]);
       const double d = (c - p).norm();
       if (d > 0.0 && d <= max_depth)
         out.emplace_back(d + margin, c + (c - p) / d * margin);
     }
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& [d, q] : out)
-    if (afloat(land, q))
+    if (!insideAnyObstacle(land, q))
       return q;
   return std::nullopt;
 }

@@ -15,13 +15,19 @@ inline double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
-// Shortest distance from p to the closed segment a-b (to a when the segment has no length).
-inline double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                                   const Eigen::Vector2d& b) {
+// The point of the closed segment a-b nearest to p (a when the segment has no length).
+inline Eigen::Vector2d nearestPointOnSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                                             const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double l2 = ab.squaredNorm();
   const double s = l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (a + s * ab - p).norm();
+  return a + s * ab;
+}
+
+// Shortest distance from p to the closed segment a-b (to a when the segment has no length).
+inline double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                                   const Eigen::Vector2d& b) {
+  return (nearestPointOnSegment(p, a, b) - p).norm();
 }
 
 // Closed segments a-b and c-d share a point (touching and collinear overlap included).

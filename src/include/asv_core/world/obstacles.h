@@ -39,6 +39,8 @@ constexpr size_t kIndexedObstacleVertices = 64;
 void indexObstacles(std::vector<StaticObstacle>& obstacles);
 // The geometry.h queries on one obstacle, through its index when it has one.
 bool insideObstacle(const StaticObstacle& o, const Eigen::Vector2d& p);
+// p lies inside (or on the edge of) one of the obstacles: on land.
+bool insideAnyObstacle(const std::vector<StaticObstacle>& obstacles, const Eigen::Vector2d& p);
 double obstacleDistance(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);  // area
 double obstacleBoundaryDistance(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 double obstacleLengthInside(const StaticObstacle& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
