@@ -118,7 +118,9 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
   }
   follower_config_ = followerConfig(p, lockstep_.enabled(), mode_, *plugin_);
   follower_ = std::make_unique<asv::PlanFollower>(follower_config_);  // validates: throws on a bad value
-  if (p.has_goal)
+  if (!scenario_route_.empty())
+    follower_->setRoute(scenario_route_);
+  else if (p.has_goal)
     follower_->setGoal(p.goal);
   follower_->setObstacles(allObstacles());
   start();
@@ -144,6 +146,7 @@ void PlannerNode::applyScenario() {
   if (!p.has_goal && ship->goal) {
     p.goal = *ship->goal;
     p.has_goal = true;
+    scenario_route_ = ship->route;  // the voyage plan, unless goal_x/goal_y name another goal
   }
   if (p.follower.cruise_speed <= 0.0)
     p.follower.cruise_speed = ship->speed;

@@ -380,7 +380,9 @@ void BatchRun::addPluginShips(asv_planning::PluginLoader& loader) {
       rc.cri = asv::GaConfig::fromParams(sc_.planner_params.sub("ga")).cri;
     auto ps = std::make_unique<PluginShip>(
         PluginShip{i, p, mode, std::move(plugin), asv::PlanFollower(fc), asv::RiskAssessor(rc)});
-    if (vs[i].goal)
+    if (!vs[i].route.empty())
+      ps->follower.setRoute(vs[i].route);
+    else if (vs[i].goal)
       ps->follower.setGoal(*vs[i].goal);
     ps->follower.setObstacles(sc_.obstacles);
     plugin_ships_.push_back(std::move(ps));

@@ -124,6 +124,7 @@ private:
   std::string mode_ = "sea";            // the plugin's mode in force (its key mode)
   double scenario_min_separation_ = 0;  // [m] the scenario's (0: none)
   double scenario_goal_radius_ = 0;     // [m] this ship's arrival radius in the scenario (0: none)
+  asv::Route scenario_route_;           // this ship's voyage plan in the scenario (unless goal_x/y given)
   std::unique_ptr<dynamic_reconfigure::Server<PlannerConfig>> live_;
   bool live_started_ = false;
 };

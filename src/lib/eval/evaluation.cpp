@@ -115,6 +115,9 @@ RunInfo RunInfo::fromScenario(const Scenario& sc, const std::string& planner, ui
   info.obstacles = sc.obstacles;
   info.origin = sc.origin;
   info.ships.push_back({sc.own.name, sc.own.goal, info.planner});
+  info.route = sc.own.route;
+  info.route_start = sc.own.position;
+  info.human = sc.human;
   for (const auto& t : sc.targets) {
     const bool plans = t.behaviour == Behaviour::Planner;
     info.ships.push_back({t.name, t.goal, plans ? (t.planner.empty() ? "none" : t.planner) : ""});
@@ -195,6 +198,8 @@ void RunRecorder::addSample(double t, const std::vector<ShipSample>& ships) {
       addSetpoint(t, s.name, s.course_setpoint);
     if (s.active)
       checkLand(static_cast<size_t>(i), s);
+    if (i == 0 && s.active)
+      followRoute(t, p);
   }
   for (size_t a = 0; a < present.size(); ++a)
     for (size_t b = a + 1; b < present.size(); ++b) {
@@ -210,6 +215,16 @@ void RunRecorder::addSample(double t, const std::vector<ShipSample>& ships) {
       min_dist_[i][j] = std::min(min_dist_[i][j], d);
       min_dist_[j][i] = min_dist_[i][j];
     }
+}
+
+void RunRecorder::followRoute(double t, const Eigen::Vector2d& p) {
+  if (info_.route.empty())
+    return;
+  const RouteDeviation d = routeDeviation(info_.route, info_.route_start, p);
+  route_stats_.max_xte = std::max(route_stats_.max_xte, std::abs(d.xte));
+  if (d.outside_corridor && std::isfinite(route_last_t_))
+    route_stats_.outside_corridor += t - route_last_t_;
+  route_last_t_ = t;
 }
 
 void RunRecorder::checkLand(size_t i, const ShipSample& s) {
@@ -876,6 +891,15 @@ RunResult RunRecorder::finish() const {
     r.plan_time.count = static_cast<long>(n);
   }
   r.wall_time = wall_time_;
+  r.route = route_stats_;
+  r.route.legs = info_.route.size();
+  if (info_.human) {
+    r.human = info_.human;
+    if (info_.human->min_separation_m > 0.0)
+      r.separation_vs_human = r.own.min_separation / info_.human->min_separation_m;
+    if (r.own.arrived)
+      r.time_vs_human = r.own.time_to_goal / info_.human->time_s;
+  }
   r.multi_agent = info_.multi_agent;
   if (r.multi_agent)
     for (size_t i = 0; i < info_.ships.size(); ++i)

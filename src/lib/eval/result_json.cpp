@@ -101,6 +101,22 @@ std::string toJson(const RunResult& r, bool pretty) {
   pt.add("count", Json::integer(r.plan_time.count));
   o.add("plan_time_ms", pt);
   o.add("wall_time_s", Json::number(r.wall_time, kMs));
+  if (r.human) {
+    Json h = Json::object();
+    h.add("min_separation_m", Json::number(r.human->min_separation_m, kMetres));
+    h.add("time_s", Json::number(r.human->time_s, kSeconds));
+    h.add("path_m", Json::number(r.human->path_m, kMetres));
+    o.add("human", h);
+    o.add("separation_vs_human", Json::number(r.separation_vs_human, kRatio));
+    o.add("time_vs_human", Json::number(r.time_vs_human, kRatio));
+  }
+  if (r.route.legs > 0) {
+    Json rt = Json::object();
+    rt.add("legs", Json::integer(static_cast<long>(r.route.legs)));
+    rt.add("max_xte_m", Json::number(r.route.max_xte, kMetres));
+    rt.add("outside_corridor_s", Json::number(r.route.outside_corridor, kSeconds));
+    o.add("route", rt);
+  }
   if (r.multi_agent) {
     Json ships = Json::array();
     for (const auto& s : r.ships) {
@@ -145,6 +161,12 @@ std::string summaryLine(const RunResult& r) {
     os << ", not arrived";
   if (std::isfinite(r.own.path_ratio))
     os << strFormat(", path ratio %.3f", r.own.path_ratio);
+  if (r.route.legs > 0)
+    os << strFormat(", off route max %.0f m", r.route.max_xte);
+  if (r.human && std::isfinite(r.separation_vs_human))
+    os << strFormat(", sep %.2fx the master's", r.separation_vs_human);
+  if (r.human && std::isfinite(r.time_vs_human))
+    os << strFormat(", time %.2fx hers", r.time_vs_human);
   os << strFormat(", COLREGs %.2f", r.own.colregs_score);
   if (r.plan_time.count > 0)
     os << strFormat(", plan %.1f ms median", r.plan_time.median_ms) << " (" << r.plan_time.count << ")";

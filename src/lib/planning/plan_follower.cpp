@@ -15,6 +15,13 @@
 
 namespace asv {
 
+namespace {
+// Past the plan the ship steers for a point this many waypoint acceptance radii ahead on the active leg
+// (300 m by default): a line-of-sight lookahead of a few ship lengths, which brings her back onto the
+// leg at about 18 deg from 100 m off it. Our choice.
+constexpr double kLineOfSightLookahead = 2.0;
+}  // namespace
+
 void PlanFollowerConfig::validate() const {
   auto require = [](bool ok, const char* what) {
     if (!ok)
@@ -355,26 +362,65 @@ void PlanFollower::updateOwn(const ShipState& own) {
   if (!own_ && cfg_.cruise_speed <= 0.0)
     cfg_.cruise_speed = std::max(0.5, own.speed);
   own_ = own;
+  if (!route_.empty() && !progress_)
+    progress_ = RouteProgress(route_, own.position);
+  if (progress_ && progress_->update(own.position, std::max(own.speed, legSpeed()), cfg_.limits.turn_rate,
+                                     cfg_.waypoint_acceptance))
+    leg_changed_ = true;
+}
+
+void PlanFollower::setRoute(Route route) {
+  if (route.empty())
+    throw std::invalid_argument("plan follower: a route needs at least one waypoint");
+  goal_ = route.back().position;
+  route_ = std::move(route);
+  progress_.reset();
+  if (own_)
+    progress_ = RouteProgress(route_, own_->position);
+  have_plan_ = false;  // replan along the new route
+}
+
+std::optional<double> PlanFollower::crossTrackError() const {
+  if (!progress_ || !own_)
+    return std::nullopt;
+  return progress_->crossTrackError(own_->position);
+}
+
+double PlanFollower::legSpeed() const {
+  return progress_ && progress_->target().speed > 0.0 ? progress_->target().speed : cfg_.cruise_speed;
+}
+
+std::vector<Eigen::Vector2d> PlanFollower::wayAhead() const {
+  std::vector<Eigen::Vector2d> way;
+  if (progress_)
+    way = progress_->waypointsBeforeGoal();
+  way.push_back(goalOrAhead());
+  return way;
 }
 
 PlanningProblem PlanFollower::buildProblem(double now, const std::vector<PlannerTarget>& targets) const {
   PlanningProblem pr;
   pr.time = now;
   pr.own = *own_;
-  pr.own.speed = std::max(pr.own.speed, cfg_.cruise_speed);  // plan for the cruising speed
-  pr.cruise_speed = cfg_.cruise_speed;
+  pr.own.speed = std::max(pr.own.speed, legSpeed());  // plan for the cruising (or the leg's) speed
+  pr.cruise_speed = legSpeed();
   pr.limits = cfg_.limits;
   pr.goal = goalOrAhead();
   pr.obstacles = obstacles_;
-  // Round land: the planners steer for the route's next point (none when the straight way is clear).
-  // Land beyond the reach (speed x horizon) of the straight way is left to a later plan.
-  const double required =
-      landRequirement(pr.own.position, pr.goal, obstacles_, cfg_.min_obstacle_clearance_m);
+  if (progress_)
+    pr.route = progress_->waypointsBeforeGoal();  // the voyage plan's next waypoints
+  // Round land: the planners steer for a way round it to the next point (none when the straight way is
+  // clear). Land beyond the reach (speed x horizon) of the straight way is left to a later plan.
+  const Eigen::Vector2d next = nextWayPoint(pr);
+  const double required = landRequirement(pr.own.position, next, obstacles_, cfg_.min_obstacle_clearance_m);
   const double reach = std::max(pr.own.speed, 0.5) * cfg_.prediction_horizon;
   if (required > 0.0 &&
-      trackObstacleDistance(truncateTrack({pr.own.position, pr.goal}, reach), obstacles_) < required)
-    if (auto route = landRoute(pr.own.position, pr.goal, obstacles_, cfg_.min_obstacle_clearance_m, required))
-      pr.route = std::move(*route);
+      trackObstacleDistance(truncateTrack({pr.own.position, next}, reach), obstacles_) < required)
+    if (auto round = landRoute(pr.own.position, next, obstacles_, cfg_.min_obstacle_clearance_m, required)) {
+      if (!pr.route.empty())
+        round->push_back(next);
+      pr.route.insert(pr.route.begin(), round->begin(), round->end());
+    }
   pr.seed = static_cast<uint64_t>(cfg_.seed) + replans_;
   pr.time_budget = cfg_.time_budget;
   pr.min_separation = cfg_.min_separation;
@@ -416,7 +462,7 @@ Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std
   // Holding course (or turning hard) onto land is no fallback: the ship stops instead (a grounding is
   // as bad as a collision; Rule 8(e): taking all way off is an action to avoid a collision too).
   const double required =
-      landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
+      landRequirement(own_->position, wayAhead().front(), obstacles_, cfg_.min_obstacle_clearance_m);
   if (required > 0.0 &&
       trackObstacleDistance(landTrack(f, own_->position, f.speed_setpoint * cfg_.prediction_horizon),
                             obstacles_) < required) {
@@ -441,8 +487,10 @@ double PlanFollower::predictedClearance(const std::vector<PlannerTarget>& target
       route.points.push_back(plan_.waypoints[i].position);
       route.speeds.push_back(plan_.waypoints[i].speed > 0.0 ? plan_.waypoints[i].speed : cruise);
     }
-    route.points.push_back(goalOrAhead());
-    route.speeds.push_back(plan_.speed_setpoint > 0.0 ? plan_.speed_setpoint : cfg_.cruise_speed);
+    for (const Eigen::Vector2d& w : wayAhead()) {
+      route.points.push_back(w);
+      route.speeds.push_back(plan_.speed_setpoint > 0.0 ? plan_.speed_setpoint : legSpeed());
+    }
     route.ends_at_goal = goal_.has_value();
   }
   std::vector<PlannerTarget> others;
@@ -454,7 +502,7 @@ double PlanFollower::predictedClearance(const std::vector<PlannerTarget>& target
 
 bool PlanFollower::landAhead() const {
   const double required =
-      landRequirement(own_->position, goalOrAhead(), obstacles_, cfg_.min_obstacle_clearance_m);
+      landRequirement(own_->position, wayAhead().front(), obstacles_, cfg_.min_obstacle_clearance_m);
   if (!(required > 0.0))
     return false;
   const double reach = std::max(speed_sp_, cfg_.cruise_speed) * cfg_.prediction_horizon;
@@ -463,7 +511,8 @@ bool PlanFollower::landAhead() const {
     for (size_t i = wp_index_; i < plan_.waypoints.size(); ++i)
       track.push_back(plan_.waypoints[i].position);
     if (wp_index_ >= plan_.waypoints.size() && goal_)
-      track.push_back(*goal_);  // past the plan the ship steers for the goal
+      for (const Eigen::Vector2d& w : wayAhead())
+        track.push_back(w);  // past the plan the ship steers for the route and the goal
     track = truncateTrack(track, reach);
   } else {
     track = landTrack(plan_, own_->position, reach);
@@ -489,6 +538,10 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
   const double since = now - last_plan_time_;
   if (since < cfg_.min_replan_interval)
     return false;
+  if (leg_changed_) {
+    leg_changed_ = false;
+    return why = "route: waypoint passed, next leg", true;
+  }
   for (const auto& t : targets) {
     auto it = known_levels_.find(t.state.id);
     if (t.risk == RiskLevel::None) {
@@ -629,12 +682,14 @@ bool PlanFollower::setpoint(double& course_out, double& speed_out) {
       course = courseOf(wps[wp_index_].position - p);
       if (wps[wp_index_].speed > 0.0)
         speed = wps[wp_index_].speed;
+    } else if (progress_) {
+      course = courseOf(progress_->lineOfSight(p, kLineOfSightLookahead * cfg_.waypoint_acceptance) - p);
     } else if (goal_) {
       course = courseOf(*goal_ - p);  // past the plan: back to the goal
     }
   }
   if (!(speed > 0.0) && plan_.status != PlanStatus::Fallback)
-    speed = cfg_.cruise_speed;
+    speed = legSpeed();
   if (!std::isfinite(course) || !std::isfinite(speed))
     return false;
   course_sp_ = wrapTwoPi(course);

@@ -14,6 +14,10 @@ namespace asv {
 
 namespace {
 
+// [rad/s] The rate a ship without a planner turns at a route's waypoints, for the wheel-over point: the
+// planners' default turn rate (OwnShipLimits), 1 deg/s.
+constexpr double kRouteTurnRate = 0.0175;
+
 void require(bool ok, const std::string& what) {
   if (!ok)
     throw std::invalid_argument(what);
@@ -111,6 +115,9 @@ Simulation::Simulation(const Scenario& scenario, const SimConfig& config)
     v.goal_radius = s.goal_radius;
     v.step_from = s.position;
     v.waypoints = s.waypoints;
+    v.route = s.route;
+    if (!s.route.empty())
+      v.route_progress = RouteProgress(s.route, s.position);
     v.track = s.track;
     v.track_start = s.position;
     if (v.autopilot)
@@ -242,9 +249,16 @@ void Simulation::steer(SimVessel& v) {
       giveWayLogic(v, static_cast<size_t>(&v - vessels_.data()));
       break;
     case Behaviour::Planner:
-      // Until a planner speaks (or when the ship has none), steer straight for the goal.
-      if (!v.external_setpoint && v.goal)
+      // Until a planner speaks (or when the ship has none), sail the route by line of sight (passing a
+      // waypoint at the wheel-over point of its turn), else steer straight for the goal.
+      if (!v.external_setpoint && v.route_progress) {
+        v.route_progress->update(p, v.sog(), kRouteTurnRate, accept);
+        v.course_sp = courseOf(v.route_progress->lineOfSight(p, 2.0 * accept) - p);
+        const double leg_speed = v.route_progress->target().speed;
+        v.speed_sp = leg_speed > 0.0 ? leg_speed : v.cruise_speed;
+      } else if (!v.external_setpoint && v.goal) {
         v.course_sp = courseOf(*v.goal - p);
+      }
       break;
     case Behaviour::Constant:
     case Behaviour::NonCompliant:  // a give-way ship that stands on (Hu et al. 2017, Fig. 6)

@@ -194,6 +194,7 @@ struct RawShip {
   std::optional<PointSpec> goal;
   std::vector<PointSpec> waypoints;
   std::vector<std::pair<double, PointSpec>> track;  // (t_s, point)
+  std::vector<PointSpec> route;
   YAML::Node node;
 };
 
@@ -219,11 +220,49 @@ std::vector<std::pair<double, PointSpec>> readTrack(const Ctx& c, const YAML::No
   return out;
 }
 
+// route: [{x_m, y_m} or {lat_deg, lon_deg}, with optional speed_kn, port_xtd_m, starboard_xtd_m}, ...];
+// the positions are resolved later (the frame is known then), the rest goes into r.ship.route.
+void readRoute(const Ctx& c, const YAML::Node& n, const std::string& w, RawShip& r) {
+  const YAML::Node rt = n["route"];
+  if (!rt.IsSequence() || rt.size() == 0)
+    c.fail(rt, w + "route", "expected a non-empty list of waypoints");
+  if (n["goal"])
+    c.fail(n["goal"], w + "goal", "give a goal or a route, not both (the route's last waypoint is the goal)");
+  for (size_t i = 0; i < rt.size(); ++i) {
+    const std::string wi = w + "route[" + std::to_string(i) + "]";
+    if (!rt[i].IsMap())
+      c.fail(rt[i], wi,
+             "expected {x_m, y_m} or {lat_deg, lon_deg}, optionally speed_kn, port_xtd_m, starboard_xtd_m");
+    YAML::Node point = YAML::Clone(rt[i]);
+    RouteWaypoint wp;
+    if (rt[i]["speed_kn"]) {
+      const double kn = c.number(rt[i], "speed_kn", wi + ".");
+      if (!(kn > 0.0) || kn > kMaxSpeedKn)
+        c.fail(rt[i]["speed_kn"], wi + ".speed_kn", "must be in (0, 60] kn");
+      wp.speed = knotsToMps(kn);
+    }
+    for (auto [key, field] :
+         {std::pair{"port_xtd_m", &wp.port_xtd}, std::pair{"starboard_xtd_m", &wp.starboard_xtd}})
+      if (rt[i][key]) {
+        *field = c.number(rt[i], key, wi + ".");
+        if (!(*field > 0.0) || *field > 20000.0)
+          c.fail(rt[i][key], wi + "." + key, "must be in (0, 20000] m");
+      }
+    for (const char* key : {"speed_kn", "port_xtd_m", "starboard_xtd_m"})
+      point.remove(key);
+    r.route.push_back(readPoint(c, point, wi, false));
+    r.ship.route.push_back(wp);
+    r.ship.route_lines.push_back(rt[i].Mark().line + 1);
+  }
+}
+
 RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bool own) {
   std::set<std::string> allowed{"name",   "mmsi",     "model",        "ais_class", "length_m",
                                 "beam_m", "position", "course_deg",   "speed_kn",  "speed_mps",
                                 "goal",   "planner",  "goal_radius_m"};
-  if (!own)
+  if (own)
+    allowed.insert("route");
+  else
     allowed.insert({"behaviour", "waypoints", "track"});
   c.onlyKeys(n, where, allowed);
   RawShip r;
@@ -265,9 +304,11 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
   s.speed = readSpeed(c, n, w);
   if (n["goal"])
     r.goal = readPoint(c, n["goal"], w + "goal", true);
+  if (n["route"])
+    readRoute(c, n, w, r);
   if (n["goal_radius_m"]) {
-    if (!n["goal"])
-      c.fail(n["goal_radius_m"], w + "goal_radius_m", "needs a goal");
+    if (!n["goal"] && !n["route"])
+      c.fail(n["goal_radius_m"], w + "goal_radius_m", "needs a goal or a route");
     s.goal_radius = c.number(n, "goal_radius_m", w);
     if (!(s.goal_radius > 0.0) || s.goal_radius > 10000.0)
       c.fail(n["goal_radius_m"], w + "goal_radius_m", "must be in (0, 10000] m");
@@ -447,6 +488,10 @@ void readShips(const Ctx& c, const YAML::Node& root, Scenario& s) {
       r.ship.waypoints.push_back(resolve(w, frame, own_start));
     for (const auto& [t, p] : r.track)
       r.ship.track.push_back({t, resolve(p, frame, own_start)});
+    for (size_t k = 0; k < r.route.size(); ++k)
+      r.ship.route[k].position = resolve(r.route[k], frame, own_start);
+    if (!r.ship.route.empty())
+      r.ship.goal = r.ship.route.back().position;
     return r.ship;
   };
   s.own = finish(own);
@@ -564,6 +609,21 @@ SensorFault readSensorFault(const Ctx& c, const YAML::Node& n, const std::string
   return f;
 }
 
+// human: the logged master's figures, each finite and not negative (times and paths > 0).
+std::optional<HumanRecord> readHuman(const Ctx& c, const YAML::Node& root) {
+  if (!root["human"])
+    return std::nullopt;
+  const YAML::Node n = root["human"];
+  c.onlyKeys(n, "human", {"min_separation_m", "time_s", "path_m"});
+  HumanRecord h;
+  h.min_separation_m = c.number(n, "min_separation_m", "human.");
+  h.time_s = c.number(n, "time_s", "human.");
+  h.path_m = c.number(n, "path_m", "human.");
+  if (h.min_separation_m < 0.0 || !(h.time_s > 0.0) || !(h.path_m > 0.0))
+    c.fail(n, "human", "needs min_separation_m >= 0, time_s > 0 and path_m > 0");
+  return h;
+}
+
 Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
   const Ctx c(source);
   YAML::Node root;
@@ -576,13 +636,15 @@ Scenario parseYaml(const std::string& yaml_text, const std::string& source) {
     throw ScenarioError(source + ": a scenario file must be a YAML mapping");
   c.onlyKeys(root, "",
              {"format", "name", "description", "duration_s", "origin", "safety", "own_ship", "targets",
-              "static_obstacles", "charts", "planner_params", "sensor_faults"});
+              "static_obstacles", "charts", "planner_params", "sensor_faults", "human"});
   Scenario s;
   s.source = source;
   readHeader(c, root, s);
   readShips(c, root, s);
   readObstacles(c, root, s);
+  checkRouteOffLand(s);
   readCharts(c, root, s);
+  s.human = readHuman(c, root);
   if (root["sensor_faults"]) {
     const YAML::Node fl = root["sensor_faults"];
     if (!fl.IsSequence())
@@ -609,6 +671,24 @@ const char* toString(SensorFault::Type t) {
       return "radar_swap";
   }
   return "?";
+}
+
+void checkRouteOffLand(const Scenario& s) {
+  const Route& route = s.own.route;
+  const int leg = legOnLand(route, s.own.position, s.obstacles);
+  if (leg < 0)
+    return;
+  std::string land;
+  const Eigen::Vector2d from = leg == 0 ? s.own.position : route[leg - 1].position;
+  for (const auto& o : s.obstacles)
+    if (land.empty() && obstacleDistance(o, from, route[leg].position) <= 0.0)
+      land = o.name;
+  const auto line = static_cast<size_t>(leg) < s.own.route_lines.size() ? s.own.route_lines[leg] : 0;
+  throw ScenarioError(s.source + (line > 0 ? ":" + std::to_string(line) : "") + ": 'own_ship.route[" +
+                      std::to_string(leg) + "]': leg " + std::to_string(leg + 1) +
+                      " (to this waypoint from " +
+                      (leg == 0 ? std::string("the start") : "waypoint " + std::to_string(leg - 1)) +
+                      ") crosses '" + land + "'");
 }
 
 Scenario parseScenario(const std::string& yaml_text, const std::string& source) {

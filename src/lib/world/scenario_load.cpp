@@ -35,6 +35,8 @@ void loadCharts(Scenario& s, const ChartOptions& options) {
     s.obstacles.push_back({"land " + std::to_string(i + 1), std::move(land[i]), nullptr});
   }
   indexObstacles(s.obstacles);
+  if (options.own_afloat)
+    checkRouteOffLand(s);
 }
 
 Scenario loadScenario(const std::string& path, const ChartOptions& options) {

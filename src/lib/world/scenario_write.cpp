@@ -34,6 +34,21 @@ void writeTrack(std::ostringstream& out, const std::vector<TrackPoint>& track, c
     out << i << strFormat("  - {t_s: %.1f, x_m: %.1f, y_m: %.1f}\n", p.t, p.position.x(), p.position.y());
 }
 
+// A voyage plan, one waypoint a line, with the leg's speed and corridor where given.
+void writeRoute(std::ostringstream& out, const Route& route, const std::string& i) {
+  out << i << "route:\n";
+  for (const auto& w : route) {
+    out << i << strFormat("  - {x_m: %.1f, y_m: %.1f", w.position.x(), w.position.y());
+    if (w.speed > 0.0)
+      out << strFormat(", speed_kn: %.2f", mpsToKnots(w.speed));
+    if (w.port_xtd > 0.0)
+      out << strFormat(", port_xtd_m: %.1f", w.port_xtd);
+    if (w.starboard_xtd > 0.0)
+      out << strFormat(", starboard_xtd_m: %.1f", w.starboard_xtd);
+    out << "}\n";
+  }
+}
+
 void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const std::string& indent) {
   const std::string in = indent + "  ";
   out << indent << (own ? "" : "- ") << "name: " << s.name << "\n";
@@ -51,7 +66,9 @@ void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const s
   // Rounded first, then wrapped: 359.96 deg is written 0.0, not 360.0 (outside [0, 360)).
   out << i << strFormat("course_deg: %.1f\n", wrapDeg360(std::round(radToDeg(s.course) * 10.0) / 10.0));
   out << i << strFormat("speed_kn: %.2f\n", mpsToKnots(s.speed));
-  if (s.goal)
+  if (!s.route.empty())
+    writeRoute(out, s.route, i);
+  else if (s.goal)
     out << i << "goal: " << point(*s.goal) << "\n";
   if (s.goal_radius > 0.0)
     out << i << strFormat("goal_radius_m: %.1f\n", s.goal_radius);
@@ -98,6 +115,9 @@ std::string scenarioToYaml(const Scenario& s) {
   out << "}\n";
   if (s.charts)
     writeCharts(out, *s.charts, s.min_obstacle_clearance);
+  if (s.human)
+    out << strFormat("human: {min_separation_m: %.1f, time_s: %.1f, path_m: %.1f}\n",
+                     s.human->min_separation_m, s.human->time_s, s.human->path_m);
   out << "own_ship:\n";
   writeShip(out, s.own, true, "  ");
   if (!s.targets.empty())

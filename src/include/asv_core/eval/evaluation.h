@@ -111,6 +111,11 @@ struct RunInfo {
   std::vector<Ship> ships;                // ships[0] is the own ship; every sample lists ships by these names
   std::vector<StaticObstacle> obstacles;  // static obstacles (land), ENU [m]
   GeoPoint origin;                        // of the ENU frame (the scenario's; 0 N 0 E without one)
+  // The own ship's voyage plan, sailed from route_start (her place at t = 0): the run reports how far
+  // she strayed from it. Empty: none.
+  Route route;
+  Eigen::Vector2d route_start = Eigen::Vector2d::Zero();
+  std::optional<HumanRecord> human;  // the logged master's figures, to compare the run with
 
   // From a scenario: the own ship first, then the targets in file order.
   static RunInfo fromScenario(const Scenario& scenario, const std::string& planner, uint64_t seed);
@@ -185,6 +190,18 @@ struct RunResult {
   double wall_time = 0.0;  // [s]
   bool multi_agent = false;
   std::vector<ShipResult> ships;
+  // With a human record (RunInfo::human): our min_separation and time_to_goal over the master's (NaN
+  // without a separation, or when not arrived).
+  std::optional<HumanRecord> human;
+  double separation_vs_human = std::numeric_limits<double>::quiet_NaN();
+  double time_vs_human = std::numeric_limits<double>::quiet_NaN();
+  // With a voyage plan: the own ship's largest distance from the route (the nearest leg; routeDeviation)
+  // while she sailed, and the time she spent outside a leg's corridor.
+  struct RouteStats {
+    std::size_t legs = 0;           // 0: no route
+    double max_xte = 0.0;           // [m]
+    double outside_corridor = 0.0;  // [s]
+  } route;
 };
 
 // Safety score of a passing range r (see EvaluationConfig).
@@ -246,6 +263,8 @@ private:
   int index(const std::string& name) const;
   // Ship i's hull in sample s against every static obstacle: min_obstacle_, grounded_.
   void checkLand(size_t i, const ShipSample& s);
+  // The own ship at p (time t) against the voyage plan: route_stats_.
+  void followRoute(double t, const Eigen::Vector2d& p);
   ShipResult evaluateShip(size_t i) const;
   // Ships i and j over the run: their common instants, the CPA at each and the entry into the rules
   // (ke; both.size() when none).
@@ -301,6 +320,8 @@ private:
   std::vector<double> min_obstacle_;           // per ship [m]: hull to the nearest obstacle
   std::vector<double> arrival_;                // arrival time per ship (NaN: none)
   std::vector<double> plan_times_;
+  RunResult::RouteStats route_stats_;
+  double route_last_t_ = std::numeric_limits<double>::quiet_NaN();  // the own ship's previous sample
   double wall_time_ = 0.0;
   double last_t_ = -1e300;
   size_t samples_ = 0;

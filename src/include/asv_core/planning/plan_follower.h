@@ -8,7 +8,10 @@
 //    or stopped when that course would take the ship onto land;
 //  - no plan may bring the ship closer to land than min_obstacle_clearance_m, or pass a target closer than
 //    the minimum separation when another plan or the separation manoeuvre keeps it (planUnderSharedRules);
-//  - set-points steer for the next plan waypoint not yet within waypoint_acceptance, then for the goal.
+//  - set-points steer for the next plan waypoint not yet within waypoint_acceptance, then for the goal;
+//  - with a voyage plan (setRoute), the planners steer for the route's next waypoint (the goal is its
+//    last), a waypoint is passed at the wheel-over point of its turn, passing one replans, and past the
+//    plan the ship rejoins the active leg by line of sight (not the straight line to the goal).
 // Times are the caller's clock (simulation or ROS time) in seconds.
 #pragma once
 
@@ -21,6 +24,7 @@
 #include "asv_core/common/param_map.h"
 #include "asv_core/planning/land_route.h"
 #include "asv_core/planning/planning.h"
+#include "asv_core/world/route.h"
 
 namespace asv {
 
@@ -121,8 +125,17 @@ public:
 
   void setGoal(const Eigen::Vector2d& goal) {
     goal_ = goal;
+    route_.clear();
+    progress_.reset();
     have_plan_ = false;  // replan towards the new goal
   }
+  // A voyage plan (at least one waypoint; the last is the goal), sailed from the leg nearest to the ship
+  // at the next updateOwn(). Replaces the goal and any route.
+  void setRoute(Route route);
+  // The route being sailed, once the ship's position is known (else empty).
+  const std::optional<RouteProgress>& routeProgress() const { return progress_; }
+  // Signed cross-track error from the active leg [m], positive to starboard; nullopt without a route.
+  std::optional<double> crossTrackError() const;
   const std::optional<Eigen::Vector2d>& goal() const { return goal_; }
   void setObstacles(const std::vector<StaticObstacle>& obstacles) { obstacles_ = obstacles; }
   // The own ship now (the first call fixes the cruise speed when it is 0).
@@ -180,9 +193,16 @@ private:
   bool landAhead() const;
   // The goal, or 20 km ahead on the present course without one.
   Eigen::Vector2d goalOrAhead() const;
+  // The way on past a plan: the route's waypoints still to pass and the goal (goalOrAhead()).
+  std::vector<Eigen::Vector2d> wayAhead() const;
+  // The speed to sail now: the active leg's, else the cruise speed.
+  double legSpeed() const;
 
   PlanFollowerConfig cfg_;
   std::optional<Eigen::Vector2d> goal_;
+  Route route_;                            // the voyage plan given, until the ship's position is known
+  std::optional<RouteProgress> progress_;  // ... and sailed from then on
+  bool leg_changed_ = false;               // a route waypoint was passed: replan for the next leg
   std::vector<StaticObstacle> obstacles_;
   std::optional<ShipState> own_;
   std::map<std::string, RiskLevel> known_levels_;

@@ -60,6 +60,8 @@ struct SimVessel {
   double goal_radius = 0.0;  // [m] arrival radius; 0: max(traffic.waypoint_acceptance, 2 L)
   std::vector<Eigen::Vector2d> waypoints;
   size_t wp_index = 0;
+  Route route;  // the own ship's voyage plan (its last waypoint is `goal`); empty: none
+  std::optional<RouteProgress> route_progress;            // sailed while no planner steers her
   std::vector<TrackPoint> track;                          // Behaviour::Track
   Eigen::Vector2d track_start = Eigen::Vector2d::Zero();  // [m] where the track starts (t = 0)
   Eigen::Vector2d step_from = Eigen::Vector2d::Zero();    // [m] position at the start of the last step

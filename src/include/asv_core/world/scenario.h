@@ -14,6 +14,7 @@
 #include "asv_core/common/geodesy.h"
 #include "asv_core/common/param_map.h"
 #include "asv_core/world/obstacles.h"
+#include "asv_core/world/route.h"
 
 namespace asv {
 
@@ -52,6 +53,18 @@ struct ScenarioShip {
   // Behaviour::Track: times strictly increasing; the ship sails in a straight line from `position`
   // (t = 0) to each point in turn, arriving at its time, and leaves the scenario after the last.
   std::vector<TrackPoint> track;
+  // The own ship's voyage plan (key route): she sails it leg by leg from `position`; its last waypoint is
+  // `goal`. Empty: straight for the goal.
+  Route route;
+  std::vector<int> route_lines;  // the file's line of each route point (errors found after parsing)
+};
+
+// What the master who sailed the window did, from the same log (key human; real-traffic scenarios):
+// the yardstick a run in her place is judged against.
+struct HumanRecord {
+  double min_separation_m = 0.0;  // her closest approach to any other vessel of the log
+  double time_s = 0.0;            // her time from the start to the goal
+  double path_m = 0.0;            // the length of her track
 };
 
 // A sensor fault the simulator's NMEA emitter plays (sim_node; asv_batch uses ground truth and ignores
@@ -89,6 +102,7 @@ struct Scenario {
   // against the scenario's folder). Its polygons join `obstacles` as "land 1", "land 2", ...
   std::optional<ChartSpec> charts;
   std::vector<SensorFault> sensor_faults;
+  std::optional<HumanRecord> human;
   ParamMap planner_params;  // flattened: nested maps become "a/b" keys
 
   LocalFrame frame() const { return LocalFrame(origin.lat_deg, origin.lon_deg); }
@@ -104,8 +118,12 @@ bool validPlannerName(const std::string& name);
 // Parses a scenario; `source` names the file in error messages. Throws ScenarioError. The charts key
 // is read, not loaded: see loadCharts.
 Scenario parseScenario(const std::string& yaml_text, const std::string& source = "<string>");
+// Throws ScenarioError naming the file, line and leg when a leg of the own ship's route crosses a static
+// obstacle (the scenario's or its charts' land).
+void checkRouteOffLand(const Scenario& s);
 // Adds the land of the scenario's charts (with the options' override) to its obstacles. Throws
-// ScenarioError naming the file when the chart cannot be read or the own ship starts on land.
+// ScenarioError naming the file when the chart cannot be read, the own ship starts on land or her
+// route crosses it.
 void loadCharts(Scenario& s, const ChartOptions& options);
 // Reads a scenario file and loads its charts (scenario_load.cpp).
 Scenario loadScenario(const std::string& path, const ChartOptions& options = {});

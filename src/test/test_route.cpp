@@ -1,0 +1,273 @@
+// The voyage plan (route.h): cross-track error, wheel-over point, progress along the legs, the
+// scenario's route and human keys, and the route a plan follower sails (plan_follower.h). Expected
+// values worked out by hand in the comments.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "asv_core/common/units.h"
+#include "asv_core/eval/evaluation.h"
+#include "asv_core/planning/plan_follower.h"
+#include "asv_core/world/route.h"
+#include "asv_core/world/scenario.h"
+#include "asv_core/world/scenario_write.h"
+
+using namespace asv;
+
+namespace {
+
+RouteWaypoint wp(double x, double y) {
+  RouteWaypoint w;
+  w.position = {x, y};
+  return w;
+}
+
+const char* kRouteScenario = R"(format: 1
+name: route
+duration_s: 1200
+origin: {lat_deg: 40.60, lon_deg: -74.05}
+own_ship:
+  name: own
+  position: {x_m: 0, y_m: 0}
+  course_deg: 0
+  speed_kn: 10
+  route:
+    - {x_m: 0, y_m: 1000, speed_kn: 8, starboard_xtd_m: 50}
+    - {lat_deg: 40.61, lon_deg: -74.05, port_xtd_m: 40.5}
+human: {min_separation_m: 269.5, time_s: 1260, path_m: 5600}
+)";
+
+}  // namespace
+
+TEST(Route, CrossTrackErrorIsPositiveToStarboard) {
+  // A leg due north from (0, 0) to (0, 1000): east of it is to starboard.
+  EXPECT_DOUBLE_EQ(crossTrackError({0, 0}, {0, 1000}, {100, 500}), 100.0);
+  EXPECT_DOUBLE_EQ(crossTrackError({0, 0}, {0, 1000}, {-50, 200}), -50.0);
+  // Due east from (0, 0): south of it is to starboard; 3-4-5 leg: (0, 0) -> (400, 300), point (300, 0)
+  // is 300 x 3/5 = 180 m to starboard.
+  EXPECT_DOUBLE_EQ(crossTrackError({0, 0}, {1000, 0}, {500, -30}), 30.0);
+  EXPECT_NEAR(crossTrackError({0, 0}, {400, 300}, {300, 0}), 180.0, 1e-9);
+  EXPECT_DOUBLE_EQ(alongTrackToGo({0, 0}, {0, 1000}, {100, 500}), 500.0);
+  EXPECT_DOUBLE_EQ(alongTrackToGo({0, 0}, {0, 1000}, {0, 1200}), -200.0);
+}
+
+TEST(Route, WheelOverIsTheTurnsAdvance) {
+  // 5 m/s at 0.0175 rad/s: R = 285.714 m. 90 deg: R tan 45 = R; 60 deg: R tan 30 = 164.957 m.
+  const double r = 5.0 / 0.0175;
+  EXPECT_NEAR(wheelOverDistance(degToRad(90.0), 5.0, 0.0175), r, 1e-9);
+  EXPECT_NEAR(wheelOverDistance(degToRad(-60.0), 5.0, 0.0175), r * std::tan(degToRad(30.0)), 1e-9);
+  EXPECT_NEAR(wheelOverDistance(degToRad(170.0), 5.0, 0.0175), r, 1e-9);  // at most a radius
+  EXPECT_EQ(wheelOverDistance(degToRad(90.0), 0.0, 0.0175), 0.0);
+}
+
+TEST(Route, ProgressPassesAWaypointAtTheWheelOverPoint) {
+  // North 1000 m, then east: a 90 deg turn at 5 m/s, wheel over 285.7 m before the waypoint.
+  RouteProgress pr({wp(0, 0), wp(0, 1000), wp(1000, 1000)}, {0, 0});
+  EXPECT_EQ(pr.active(), 1u);                             // she starts on the first leg between waypoints
+  EXPECT_FALSE(pr.update({0, 700}, 5.0, 0.0175, 150.0));  // 300 m to go
+  EXPECT_EQ(pr.active(), 1u);
+  EXPECT_TRUE(pr.update({0, 720}, 5.0, 0.0175, 150.0));  // 280 m to go
+  EXPECT_EQ(pr.active(), 2u);
+  EXPECT_TRUE(pr.onLastLeg());
+  EXPECT_TRUE(pr.waypointsBeforeGoal().empty());
+  // The goal is never passed.
+  EXPECT_FALSE(pr.update({2000, 1000}, 5.0, 0.0175, 150.0));
+  EXPECT_DOUBLE_EQ(pr.crossTrackError({500, 900}), 100.0);  // south of an eastbound leg: starboard
+}
+
+TEST(Route, ProgressPassesAWaypointLeftAbeamFarOff) {
+  // Avoiding, she comes abeam of the waypoint 600 m to port of it: she goes on to the next leg rather
+  // than turn back for it.
+  RouteProgress pr({wp(0, 0), wp(0, 2000), wp(0, 4000)}, {0, 0});
+  EXPECT_FALSE(pr.update({-600, 1900}, 5.0, 0.0175, 150.0));  // 100 m to go, straight on: no advance
+  EXPECT_TRUE(pr.update({-600, 2001}, 5.0, 0.0175, 150.0));
+  EXPECT_EQ(pr.active(), 2u);
+}
+
+TEST(Route, ProgressStartsBeforeTheFirstWaypoint) {
+  RouteProgress pr({wp(0, 1000), wp(0, 2000)}, {0, 0});
+  EXPECT_EQ(pr.active(), 0u);  // the first leg runs from where she was given the route
+  EXPECT_EQ(pr.legStart(), Eigen::Vector2d(0, 0));
+  ASSERT_EQ(pr.waypointsBeforeGoal().size(), 1u);
+  // Line of sight 300 m ahead of her abeam point: from (100, 200) on the leg x = 0, (0, 500).
+  EXPECT_EQ(pr.lineOfSight({100, 200}, 300.0), Eigen::Vector2d(0, 500));
+  EXPECT_EQ(pr.lineOfSight({100, 900}, 300.0), Eigen::Vector2d(0, 1000));  // never past the waypoint
+  // Given the route half-way along its second leg, she starts on it.
+  EXPECT_EQ(RouteProgress({wp(0, 1000), wp(0, 2000)}, {30, 1500}).active(), 1u);
+}
+
+TEST(Route, DeviationAndCorridorPerLeg) {
+  Route r{wp(0, 1000), wp(1000, 1000)};
+  r[0].starboard_xtd = 50.0;
+  // (80, 500): 80 m to starboard of leg 0 (north from the start), its limit 50 m.
+  RouteDeviation d = routeDeviation(r, {0, 0}, {80, 500});
+  EXPECT_EQ(d.leg, 0u);
+  EXPECT_DOUBLE_EQ(d.xte, 80.0);
+  EXPECT_TRUE(d.outside_corridor);
+  // 80 m to port: no port limit on that leg.
+  d = routeDeviation(r, {0, 0}, {-80, 500});
+  EXPECT_DOUBLE_EQ(d.xte, -80.0);
+  EXPECT_FALSE(d.outside_corridor);
+  // (600, 1030): 30 m to port of leg 1 (eastbound), nearer than leg 0 (600 m away).
+  d = routeDeviation(r, {0, 0}, {600, 1030});
+  EXPECT_EQ(d.leg, 1u);
+  EXPECT_DOUBLE_EQ(d.xte, -30.0);
+}
+
+TEST(Route, LegOnLandNamesTheFirstLegThatCrosses) {
+  const StaticObstacle islet{"islet", {{400, 900}, {600, 900}, {600, 1100}, {400, 1100}}, nullptr};
+  const Route r{wp(0, 1000), wp(1000, 1000), wp(1000, 2000)};
+  EXPECT_EQ(legOnLand(r, {0, 0}, {islet}), 1);
+  EXPECT_EQ(legOnLand(r, {0, 0}, {}), -1);
+  // 150 m clearance: leg 0 (x = 0) passes the islet at 400 m, clear.
+  EXPECT_EQ(legOnLand({wp(0, 1000)}, {0, 0}, {islet}, 150.0), -1);
+}
+
+TEST(Route, ScenarioRouteAndHumanKeys) {
+  const Scenario s = parseScenario(kRouteScenario, "route.yaml");
+  ASSERT_EQ(s.own.route.size(), 2u);
+  EXPECT_EQ(s.own.route[0].position, Eigen::Vector2d(0, 1000));
+  EXPECT_NEAR(s.own.route[0].speed, 8.0 * 1852.0 / 3600.0, 1e-9);
+  EXPECT_DOUBLE_EQ(s.own.route[0].starboard_xtd, 50.0);
+  EXPECT_DOUBLE_EQ(s.own.route[1].port_xtd, 40.5);
+  // 0.01 deg of latitude north of the origin: M x 0.01 deg with WGS84's meridian radius at 40.6 N,
+  // M = a (1 - e2) / (1 - e2 sin2 phi)^1.5 = 6362487 m: 1110.5 m.
+  EXPECT_NEAR(s.own.route[1].position.y(), 1110.5, 0.5);
+  EXPECT_NEAR(s.own.route[1].position.x(), 0.0, 0.01);
+  ASSERT_TRUE(s.own.goal.has_value());
+  EXPECT_EQ(*s.own.goal, s.own.route[1].position);  // the last waypoint is the goal
+  ASSERT_TRUE(s.human.has_value());
+  EXPECT_DOUBLE_EQ(s.human->min_separation_m, 269.5);
+  EXPECT_DOUBLE_EQ(s.human->time_s, 1260.0);
+  // Written and read back: the same route, corridor, speed and human figures.
+  const Scenario back = parseScenario(scenarioToYaml(s), "back.yaml");
+  ASSERT_EQ(back.own.route.size(), 2u);
+  EXPECT_NEAR((back.own.route[1].position - s.own.route[1].position).norm(), 0.0, 0.1);
+  EXPECT_NEAR(back.own.route[0].speed, s.own.route[0].speed, 0.01);
+  EXPECT_DOUBLE_EQ(back.own.route[1].port_xtd, 40.5);
+  ASSERT_TRUE(back.human.has_value());
+  EXPECT_DOUBLE_EQ(back.human->path_m, 5600.0);
+}
+
+TEST(Route, ScenarioRouteErrorsNameFileLineAndLeg) {
+  auto error = [](const std::string& text) {
+    try {
+      parseScenario(text, "r.yaml");
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  std::string base = kRouteScenario;
+  // A goal beside a route.
+  std::string both = base;
+  both.replace(both.find("  route:"), 0, "  goal: {x_m: 5, y_m: 5}\n");
+  EXPECT_NE(error(both).find("give a goal or a route, not both"), std::string::npos) << error(both);
+  // A speed out of range, on line 11.
+  std::string fast = base;
+  fast.replace(fast.find("speed_kn: 8"), 11, "speed_kn: 80");
+  EXPECT_NE(error(fast).find("r.yaml:11: 'own_ship.route[0].speed_kn'"), std::string::npos) << error(fast);
+  // A route over an obstacle: its second leg (line 12) crosses the islet.
+  const std::string islet =
+      "static_obstacles:\n  - name: islet\n    polygon: [{x_m: -50, y_m: 1050}, {x_m: 50, y_m: 1050}, "
+      "{x_m: 0, y_m: 1090}]\n";
+  EXPECT_NE(error(base + islet).find("r.yaml:12: 'own_ship.route[1]': leg 2"), std::string::npos)
+      << error(base + islet);
+  EXPECT_NE(error(base + islet).find("crosses 'islet'"), std::string::npos);
+  // The human block: an unknown key, a zero time.
+  std::string h = base;
+  h.replace(h.find("path_m"), 6, "path_nm");
+  EXPECT_NE(error(h).find("'human.path_nm': unknown key"), std::string::npos) << error(h);
+  h = base;
+  h.replace(h.find("time_s: 1260"), 12, "time_s: 0");
+  EXPECT_NE(error(h).find("time_s > 0"), std::string::npos) << error(h);
+}
+
+TEST(Route, FollowerPlansAlongTheRouteAndReplansAtAWaypoint) {
+  PlanFollowerConfig cfg;
+  cfg.cruise_speed = 5.0;
+  PlanFollower f(cfg);
+  Route r{wp(0, 0), wp(0, 1000), wp(1000, 1000), wp(1000, 3000)};
+  r[2].speed = 3.0;  // the leg to (1000, 1000)
+  f.setRoute(r);
+  ShipState own;
+  own.id = "own";
+  own.position = {20, 100};
+  own.speed = 5.0;
+  f.updateOwn(own);
+  // On leg 1, 20 m to starboard of it; the planners steer for its end, then the rest of the route.
+  ASSERT_TRUE(f.crossTrackError().has_value());
+  EXPECT_DOUBLE_EQ(*f.crossTrackError(), 20.0);
+  PlanningProblem pr = f.buildProblem(0.0, {});
+  ASSERT_EQ(pr.route.size(), 2u);
+  EXPECT_EQ(pr.route[0], Eigen::Vector2d(0, 1000));
+  EXPECT_EQ(pr.goal, Eigen::Vector2d(1000, 3000));
+  EXPECT_DOUBLE_EQ(pr.cruise_speed, 5.0);
+  std::string why;
+  ASSERT_TRUE(f.replanNeeded(0.0, {}, why));
+  Plan straight;
+  straight.status = PlanStatus::Ok;
+  straight.course_setpoint = 0.0;
+  straight.speed_setpoint = 0.0;
+  f.acceptPlan(straight, 0.0, {}, why);
+  EXPECT_FALSE(f.replanNeeded(10.0, {}, why));
+  // Past the wheel-over point of the 90 deg turn (285.7 m at 5 m/s): the next leg, at its speed.
+  own.position = {0, 750};
+  f.updateOwn(own);
+  ASSERT_TRUE(f.replanNeeded(20.0, {}, why));
+  EXPECT_NE(why.find("route"), std::string::npos);
+  pr = f.buildProblem(20.0, {});
+  ASSERT_EQ(pr.route.size(), 1u);
+  EXPECT_EQ(pr.route[0], Eigen::Vector2d(1000, 1000));
+  EXPECT_DOUBLE_EQ(pr.cruise_speed, 3.0);
+  // With no plan waypoints to fly, she rejoins the leg by line of sight: from (0, 750), 300 m along the
+  // eastbound leg from her abeam point (0, 1000) is (300, 1000): course atan2(300, 250) = 50.19 deg.
+  double course = 0.0, speed = 0.0;
+  Plan legs;
+  legs.status = PlanStatus::Ok;
+  legs.waypoints = {PlannedWaypoint{{0, 750}, 0.0, 0.0, 3.0}, PlannedWaypoint{{0, 760}, 2.0, 0.0, 3.0}};
+  f.acceptPlan(legs, 20.0, {}, why);
+  ASSERT_TRUE(f.setpoint(course, speed));
+  EXPECT_NEAR(radToDeg(course), radToDeg(std::atan2(300.0, 250.0)), 1e-6);
+  EXPECT_DOUBLE_EQ(speed, 3.0);
+}
+
+TEST(Route, ResultReportsTheRouteAndTheMasterFigures) {
+  // The own ship sails north along x = 30, 30 m to starboard of a route north along x = 0 whose
+  // corridor is 20 m to starboard; a stopped ship 500 m east of her at y = 1000. The master passed it
+  // at 250 m and took 600 s.
+  RunInfo info;
+  info.scenario = "route";
+  info.min_separation = 185.2;
+  info.ships = {{"own", Eigen::Vector2d(0, 3000), "none"}, {"moored", std::nullopt, ""}};
+  info.route = {wp(0, 3000)};
+  info.route[0].starboard_xtd = 20.0;
+  info.human = HumanRecord{250.0, 600.0, 3000.0};
+  RunRecorder rec(EvaluationConfig{}, info);
+  for (int k = 0; k <= 40; ++k) {
+    ShipSample own, moored;
+    own.name = "own";
+    own.state.position = {30.0, 50.0 * k};
+    own.state.speed = 5.0;
+    moored.name = "moored";
+    moored.state.position = {530.0, 1000.0};
+    rec.addSample(10.0 * k, {own, moored});
+  }
+  const RunResult r = rec.finish();
+  EXPECT_EQ(r.route.legs, 1u);
+  EXPECT_DOUBLE_EQ(r.route.max_xte, 30.0);
+  EXPECT_DOUBLE_EQ(r.route.outside_corridor, 400.0);  // outside from the first sample to the last
+  EXPECT_DOUBLE_EQ(r.own.min_separation, 500.0);
+  EXPECT_DOUBLE_EQ(r.separation_vs_human, 2.0);  // 500 / 250
+  EXPECT_FALSE(r.own.arrived);
+  const std::string json = toJson(r);
+  EXPECT_NE(json.find("\"human\": {\"min_separation_m\": 250.0, \"time_s\": 600.0, \"path_m\": 3000.0}"),
+            std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"separation_vs_human\": 2.0000, \"time_vs_human\": null"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"route\": {\"legs\": 1, \"max_xte_m\": 30.0, \"outside_corridor_s\": 400.0}"),
+            std::string::npos)
+      << json;
+  // Keys added later come after wall_time_s.
+  EXPECT_LT(json.find("wall_time_s"), json.find("\"human\""));
+}
