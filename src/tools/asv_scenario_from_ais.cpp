@@ -32,14 +32,20 @@ const char* const kUsage =
     "\n"
     "  CSV                  the log (any CSV with those columns; sorted or not)\n"
     "  --start TIME         UTC of the scenario's t = 0, YYYY-MM-DDTHH:MM:SS\n"
-    "  --duration S         length of the scenario [s]\n"
+    "  --duration S         length of the scenario [s]; with --own-mmsi, the window she is followed\n"
+    "                       for: the scenario lasts her time x (1 + --time-margin)\n"
     "  --out FILE           scenario file to write (its name, without .yaml, is the scenario's)\n"
     "  --own-start LAT,LON  own ship's start [deg]; with --own-goal\n"
     "  --own-goal LAT,LON   own ship's goal [deg]\n"
     "  --own-mmsi MMSI      or: the own ship takes the place of this logged vessel (her position, course\n"
     "                       and speed at TIME; her position at the window's end as the goal unless\n"
-    "                       --own-goal); she is then no target\n"
-    "  --own-speed KN       own ship's speed (default 10; with --own-mmsi: her logged SOG)\n"
+    "                       --own-goal); she is then no target. Without --own-goal, her track is the\n"
+    "                       own ship's route (key own_ship.route), her mean speed her speed, and a\n"
+    "                       human record gives her closest approach to the targets, her time and path\n"
+    "  --route-tolerance M  thinning of her track into the route, Douglas-Peucker (default 50)\n"
+    "  --no-route           with --own-mmsi: a goal only, no route\n"
+    "  --time-margin F      the scenario lasts her time x (1 + F) (default 0.3)\n"
+    "  --own-speed KN       own ship's speed (default 10; with --own-mmsi: her logged mean speed)\n"
     "  --own-course DEG     own ship's initial course (default: towards the goal)\n"
     "  --own-length M       own ship's length (default: the logged vessel's, else 120)\n"
     "  --own-model NAME     kinematic (default), point or a 3-DOF preset\n"
@@ -104,6 +110,10 @@ bool numberOption(AisScenarioOptions& o, const std::string& k, double x) {
     o.clearance_m = x;
   else if (k == "--land-accuracy" && x >= 0 && x <= 5000)
     o.land_accuracy_m = x;
+  else if (k == "--time-margin" && x >= 0 && x <= 10)
+    o.time_margin = x;
+  else if (k == "--route-tolerance" && x >= 0 && x <= 10000)
+    o.route_tolerance_m = x;
   else
     return false;
   return true;
@@ -143,6 +153,8 @@ bool parse(int argc, char** argv, Args& a) {
     exitOnHelp(k, kUsage);
     if (k == "--quiet") {
       a.quiet = true;
+    } else if (k == "--no-route") {
+      a.o.own_route = false;
     } else if (k.rfind("--", 0) != 0 && a.csv.empty()) {
       a.csv = k;
     } else if (i + 1 >= argc || !option(a, k, argv[i + 1])) {
@@ -212,7 +224,7 @@ int run(Args& a) {
   const std::string yaml = scenarioToYaml(r.scenario);
   checkLoads(yaml, a, true);
   // A logged place moved off the chart's land is the chart's error or the log's: said even with --quiet.
-  for (const std::string& m : r.moved_off_land)
+  for (const std::string& m : r.warnings)
     std::cerr << "asv_scenario_from_ais: warning: " << m << "\n";
   std::ofstream out(a.out);
   out << yaml;
@@ -227,8 +239,14 @@ int run(Args& a) {
             << " replay their tracks, " << r.stationary << " stopped\n";
   for (const auto& [why, n] : r.skipped)
     std::cerr << "  left out " << n << ": " << why << "\n";
-  if (!r.moved_off_land.empty())
-    std::cerr << "  moved off chart land: " << r.moved_off_land.size() << " place(s)\n";
+  if (!r.warnings.empty())
+    std::cerr << "  warnings: " << r.warnings.size() << "\n";
+  const Scenario& sc = r.scenario;
+  if (!sc.own.route.empty())
+    std::cerr << "  own route: " << sc.own.route.size() << " waypoint(s)\n";
+  if (sc.human)
+    std::cerr << strFormat("  the master: closest approach %.0f m, %.0f s, %.0f m sailed; scenario %.0f s\n",
+                           sc.human->min_separation_m, sc.human->time_s, sc.human->path_m, sc.duration);
   std::cerr << "  written " << a.out << "\n";
   return 0;
 }

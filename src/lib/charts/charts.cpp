@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include <cpl_error.h>
@@ -354,6 +355,22 @@ std::vector<Polygon> loadChartLand(const ChartSpec& spec, const LocalFrame& fram
   if (!path.empty())
     writeCache(path, key, land);
   return land;
+}
+
+std::vector<Eigen::Vector2d> simplifyPolyline(const std::vector<Eigen::Vector2d>& line, double tolerance) {
+  if (line.size() < 3 || !(tolerance > 0.0))
+    return line;
+  OGRLineString ls;
+  for (const auto& p : line)
+    ls.addPoint(p.x(), p.y());
+  std::unique_ptr<OGRGeometry> thin(ls.Simplify(tolerance));
+  const auto* out = thin ? dynamic_cast<const OGRLineString*>(thin.get()) : nullptr;
+  if (!out || out->getNumPoints() < 2)
+    return {line.front(), line.back()};
+  std::vector<Eigen::Vector2d> kept;
+  for (int i = 0; i < out->getNumPoints(); ++i)
+    kept.emplace_back(out->getX(i), out->getY(i));
+  return kept;
 }
 
 }  // namespace asv

@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "asv_core/charts/charts.h"
 #include "asv_core/common/format.h"
 #include "asv_core/common/geometry.h"
 #include "asv_core/common/units.h"
@@ -320,6 +321,10 @@ double routeDistance(const ScenarioShip& s, const Eigen::Vector2d& a, const Eige
 void validate(const AisScenarioOptions& o) {
   if (!(o.duration > 0.0) || o.duration > 7 * 86400.0)
     throw std::invalid_argument("duration must be in (0, 604800] s");
+  if (!(o.time_margin >= 0.0) || o.time_margin > 10.0)
+    throw std::invalid_argument("time margin must be in [0, 10]");
+  if (!(o.route_tolerance_m >= 0.0) || o.route_tolerance_m > 10000.0)
+    throw std::invalid_argument("route tolerance must be in [0, 10000] m");
   if (!(o.radius_m > 0.0) || !(o.max_gap_s > 0.0) || !(o.default_length_m > 0.0) ||
       !(o.min_separation_m > 0.0))
     throw std::invalid_argument("radius, max gap, default length and minimum separation must be > 0");
@@ -334,6 +339,7 @@ struct OwnPlace {
   std::optional<double> course_deg;
   double speed_kn = 0.0;
   double length_m = 120.0;
+  double goal_time = 0.0;  // [s] UTC the logged vessel was at the goal (0: the goal is not hers)
 };
 
 // The own ship's start, goal and motion: given, or taken from the logged vessel own_mmsi.
@@ -363,7 +369,10 @@ OwnPlace ownPlace(const std::vector<AisLogReport>& log, const AisScenarioOptions
   if (!o.own_course_deg && next && (*next - *at).norm() > 1.0)
     p.course_deg = radToDeg(courseOf(*next - *at));
   if (!o.own_goal) {
-    const auto end = positionAt(v, std::min(o.start + o.duration, v.reports.back()->time), o.max_gap_s);
+    p.goal_time = std::min(o.start + o.duration, v.reports.back()->time);
+    const auto end = positionAt(v, p.goal_time, o.max_gap_s);
+    if (!end)
+      p.goal_time = v.reports.back()->time;
     p.goal = frame.toGeodetic(end.value_or(v.xy.back()));
   }
   const AisLogReport& before = *v.reports[lastAtOrBefore(v, o.start)];
@@ -400,7 +409,7 @@ bool moveAfloat(Eigen::Vector2d& p, double length, const std::string& who, const
     return false;
   const double moved = (*w - p).norm();
   if (moved > 0.0)
-    res.moved_off_land.push_back(strFormat("%s moved %.0f m off chart land", who.c_str(), moved));
+    res.warnings.push_back(strFormat("%s moved %.0f m off chart land", who.c_str(), moved));
   p = *w;
   return true;
 }
@@ -439,6 +448,124 @@ std::string windowOutsideLog(const std::vector<AisLogReport>& log, const AisScen
          formatUtcTime(o.start + o.duration) + " (" + span + ")";
 }
 
+// Her track from the start to the goal: her place at the start, her reports between, her place at the
+// goal time.
+std::vector<TrackPoint> herTrack(const Vessel& v, const OwnPlace& place, const AisScenarioOptions& o) {
+  std::vector<TrackPoint> track;
+  if (const auto at = positionAt(v, o.start, o.max_gap_s))
+    track.push_back({o.start, *at});
+  for (size_t i = 0; i < v.reports.size(); ++i)
+    if (v.reports[i]->time > o.start && v.reports[i]->time < place.goal_time)
+      track.push_back({v.reports[i]->time, v.xy[i]});
+  track.push_back({place.goal_time, positionAt(v, place.goal_time, o.max_gap_s).value_or(v.xy.back())});
+  return track;
+}
+
+// Her time and path to the goal: until she first came within `radius` of it (where a run in her place
+// arrives), the entry interpolated on her track.
+HumanRecord herRun(const std::vector<TrackPoint>& track, double radius) {
+  HumanRecord h;
+  const Eigen::Vector2d goal = track.back().position;
+  for (size_t i = 1; i < track.size(); ++i) {
+    const Eigen::Vector2d a = track[i - 1].position, d = track[i].position - a;
+    // The first s in [0, 1] with |a + s d - goal| = radius, when the segment ends inside the circle.
+    double s = 1.0;
+    if ((track[i].position - goal).norm() <= radius && d.squaredNorm() > 0.0) {
+      const Eigen::Vector2d f = a - goal;
+      const double qa = d.squaredNorm(), qb = 2.0 * f.dot(d), qc = f.squaredNorm() - radius * radius;
+      s = std::clamp((-qb - std::sqrt(std::max(0.0, qb * qb - 4.0 * qa * qc))) / (2.0 * qa), 0.0, 1.0);
+    }
+    h.path_m += s * d.norm();
+    h.time_s = track[i - 1].t + s * (track[i].t - track[i - 1].t) - track.front().t;
+    if (s < 1.0 || (track[i].position - goal).norm() <= radius)
+      break;
+  }
+  return h;
+}
+
+double landDistance(const std::vector<StaticObstacle>& land, const Eigen::Vector2d& a,
+                    const Eigen::Vector2d& b) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const auto& l : land)
+    d = std::min(d, obstacleDistance(l, a, b));
+  return d;
+}
+
+// Indices of `kept` (a thinned copy of pts) in pts: the thinning keeps points of the line in order.
+std::vector<size_t> keptIndices(const std::vector<Eigen::Vector2d>& pts,
+                                const std::vector<Eigen::Vector2d>& kept) {
+  std::vector<size_t> idx;
+  size_t k = 0;
+  for (size_t i = 0; i < pts.size() && k < kept.size(); ++i)
+    if (pts[i] == kept[k]) {
+      idx.push_back(i);
+      ++k;
+    }
+  return idx;
+}
+
+// Her track thinned (route_tolerance_m) into the own ship's route from her (moved) start to her
+// (moved) goal. Her points on chart land within its accuracy are moved off it first; a thinned leg
+// that comes closer to land than her own track there and the clearance is replaced by her track.
+// Empty, with a note, when her track itself crosses the chart's land.
+Route herRoute(const std::vector<TrackPoint>& track, const ScenarioShip& own, const AisScenarioOptions& o,
+               AisScenarioResult& res) {
+  std::vector<Eigen::Vector2d> pts;
+  size_t moved = 0;
+  for (const auto& p : track) {
+    const auto w = nearestWater(o.land, p.position, o.land_accuracy_m, std::max(10.0, 0.5 * own.length));
+    moved += w && *w != p.position;
+    pts.push_back(w.value_or(p.position));
+  }
+  pts.front() = own.position;
+  pts.back() = *own.goal;
+  if (moved > 0)
+    res.warnings.push_back(strFormat("own route: %zu of her logged points moved off chart land", moved));
+  const std::vector<size_t> idx = keptIndices(pts, simplifyPolyline(pts, o.route_tolerance_m));
+  std::vector<size_t> legs{idx.front()};
+  for (size_t k = 1; k < idx.size(); ++k) {
+    double hers = std::numeric_limits<double>::infinity();
+    for (size_t i = idx[k - 1]; i < idx[k]; ++i)
+      hers = std::min(hers, landDistance(o.land, pts[i], pts[i + 1]));
+    const bool cut = landDistance(o.land, pts[idx[k - 1]], pts[idx[k]]) < std::min(hers, o.clearance_m);
+    for (size_t i = cut ? idx[k - 1] + 1 : idx[k]; i <= idx[k]; ++i)
+      legs.push_back(i);
+    if (hers <= 0.0) {
+      res.warnings.push_back(
+          strFormat("own route: her logged track crosses chart land %.0f s after the start: written with a "
+                    "goal only",
+                    track[idx[k]].t - o.start));
+      return {};
+    }
+  }
+  Route route;
+  for (size_t k = 1; k < legs.size(); ++k) {
+    RouteWaypoint w;
+    w.position = pts[legs[k]];
+    route.push_back(w);
+  }
+  return route;
+}
+
+// Her closest approach to the targets of the scenario, by their logged positions (a stopped one at her
+// place at the start, as written) every 5 s from the start until she arrived (`end`); infinity when no
+// target was there at the same time.
+double herSeparation(const Vessel& her, const std::vector<std::pair<const Vessel*, bool>>& targets,
+                     double end, const AisScenarioOptions& o) {
+  double best = std::numeric_limits<double>::infinity();
+  for (double t = o.start; t <= end; t += 5.0) {
+    const auto p = positionAt(her, t, o.max_gap_s);
+    if (!p)
+      continue;
+    for (const auto& [v, still] : targets) {
+      const auto q = positionAt(*v, still ? o.start : t, o.max_gap_s);
+      if (q)
+        best = std::min(best, (*q - *p).norm());
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const AisScenarioOptions& o) {
@@ -457,10 +584,23 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
   ownAfloat(sc.own, place, o, res);
   std::size_t refused_fixes = 0;
   const auto vessels = byVessel(log, frame, knotsToMps(o.max_jump_speed_kn), refused_fixes);
+  // In a logged vessel's place: her track as the route, her mean speed, her time with the margin.
+  AisScenarioOptions tw = o;  // the targets' window: the scenario's duration
+  const Vessel* her = o.own_mmsi != 0 && place.goal_time > o.start ? &vessels.at(o.own_mmsi) : nullptr;
+  if (her) {
+    const std::vector<TrackPoint> track = herTrack(*her, place, o);
+    // The simulator's default arrival radius (simulation.h): max(200 m, 2 L).
+    sc.human = herRun(track, std::max(200.0, 2.0 * sc.own.length));
+    sc.duration = tw.duration = std::ceil(sc.human->time_s * (1.0 + o.time_margin));
+    sc.own.speed = sc.human->path_m / sc.human->time_s;
+    if (o.own_route)
+      sc.own.route = herRoute(track, sc.own, o, res);
+  }
+  std::vector<std::pair<const Vessel*, bool>> included;  // the targets written, stopped or not
   std::set<std::string> names{"own"};
   for (const auto& [mmsi, v] : vessels) {
     const bool in_window = std::any_of(v.reports.begin(), v.reports.end(), [&](const AisLogReport* r) {
-      return r->time >= o.start - o.max_gap_s && r->time <= o.start + o.duration;
+      return r->time >= o.start - o.max_gap_s && r->time <= o.start + tw.duration;
     });
     if (!in_window || mmsi == o.own_mmsi)
       continue;
@@ -474,7 +614,7 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
       skip = "no report after the start within the maximum gap";
     ScenarioShip s;
     if (skip.empty()) {
-      s = targetOf(v, *at, o);
+      s = targetOf(v, *at, tw);
       if (s.track.empty())
         skip = "no report after the start within the maximum gap";
       else if (routeDistance(s, sc.own.position, *sc.own.goal) > o.radius_m)
@@ -486,7 +626,7 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
       ++res.skipped[skip];
       continue;
     }
-    const bool still = stationary(v, s, o);
+    const bool still = stationary(v, s, tw);
     if (still && insideAnyObstacle(o.land, s.position)) {
       ++res.skipped["stopped on chart land (a berth the chart draws as land)"];
       continue;
@@ -500,7 +640,15 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
     } else {
       ++res.tracks;
     }
+    included.emplace_back(&v, still);
     sc.targets.push_back(std::move(s));
+  }
+  if (her) {
+    sc.human->min_separation_m = herSeparation(*her, included, o.start + sc.human->time_s, o);
+    if (!std::isfinite(sc.human->min_separation_m)) {
+      sc.human.reset();
+      res.warnings.push_back("no target was logged beside her: written without a human record");
+    }
   }
   if (res.vessels_seen == 0)
     throw std::invalid_argument(windowOutsideLog(log, o));
@@ -518,7 +666,7 @@ AisScenarioResult scenarioFromAis(const std::vector<AisLogReport>& log, const Ai
   sc.description = strFormat(
       "Real traffic from %s: %zu vessels replaying their recorded tracks and %zu stopped, %.0f s from %s. "
       "Written by asv_scenario_from_ais.",
-      src, res.tracks, res.stationary, o.duration, formatUtcTime(o.start).c_str());
+      src, res.tracks, res.stationary, sc.duration, formatUtcTime(o.start).c_str());
   return res;
 }
 

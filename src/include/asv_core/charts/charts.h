@@ -80,6 +80,10 @@ std::vector<Polygon> loadChartLand(const ChartSpec& spec, const LocalFrame& fram
 // The cache file an extraction would be kept in (cache_dir/land-<hash>.txt); empty without cache_dir.
 std::string chartCachePath(const ChartSpec& spec, const LocalFrame& frame, const Eigen::Vector2d& water);
 
+// A polyline thinned by Douglas-Peucker (GEOS through OGR, as the charts' outlines): the points kept are
+// points of `line` (the first and the last always), none farther than `tolerance` [m] from the result.
+std::vector<Eigen::Vector2d> simplifyPolyline(const std::vector<Eigen::Vector2d>& line, double tolerance);
+
 // The default cache folder: $ASV_CHART_CACHE, else $XDG_CACHE_HOME/asv/charts, else ~/.cache/asv/charts.
 std::string defaultChartCacheDir();
 

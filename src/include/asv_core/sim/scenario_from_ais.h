@@ -77,7 +77,7 @@ struct AisScenarioOptions {
   double clearance_m = 100.0;       // the obstacle clearance written with charts
   // Land in the scenario's frame (the charts' polygons, loaded by the caller). The own ship's start or
   // goal on it by no more than land_accuracy_m is taken as afloat: moved to the nearest water, half her
-  // length (at least 10 m) past the chart's edge, and reported in moved_off_land; deeper inland it is
+  // length (at least 10 m) past the chart's edge, and reported in warnings; deeper inland it is
   // an error. A stopped vessel on it is left out: a berth on a pier the chart draws as land (GSHHG
   // does), which the land already keeps the own ship away from; moved, a moored ship would become a
   // phantom in the fairway (in New York, up to 235 m off the chart's edge, two onto one place).
@@ -86,6 +86,18 @@ struct AisScenarioOptions {
   // Vector Shoreline, digitised from charts of about 1:250,000, where 1 mm on paper is 250 m. With a
   // finer chart of the user's, set it lower (--land-accuracy).
   double land_accuracy_m = 250.0;
+  // In a logged vessel's place (own_mmsi, no own_goal): her track from the start to the window's end
+  // (or her last report) is the own ship's route, thinned by Douglas-Peucker to route_tolerance_m (our
+  // choice, 50 m: a quarter of a narrow channel's width, and no thinned leg comes closer to land than
+  // her track did or the clearance); her mean speed over it the own ship's speed; the scenario lasts her
+  // time x (1 + time_margin) (our choice, 0.3: the 30 % more time a run may take and still count as
+  // arriving like her); and a human record (scenario key human) holds her closest approach to the
+  // targets written (every 5 s, by their logged positions), her time and her path until she came within
+  // the simulator's default arrival radius of her goal (max(200 m, 2 L)), where a run in her place
+  // arrives.
+  bool own_route = true;  // false: a goal only, as before routes
+  double route_tolerance_m = 50.0;
+  double time_margin = 0.3;
 };
 
 struct AisScenarioResult {
@@ -93,8 +105,9 @@ struct AisScenarioResult {
   std::size_t vessels_seen = 0;  // distinct MMSIs reporting in the window
   std::size_t tracks = 0, stationary = 0;      // targets written of each kind
   std::map<std::string, std::size_t> skipped;  // vessels left out, by reason
-  // Logged places moved off chart land: who, how far and where to ("own start moved 84 m off land").
-  std::vector<std::string> moved_off_land;
+  // What the user should know of the log's data: logged places moved off chart land, who and how far
+  // ("own start moved 84 m off chart land"); a route or human record that could not be written, and why.
+  std::vector<std::string> warnings;
 };
 
 // Builds the scenario. Throws std::invalid_argument for options that cannot make one (no own start or
