@@ -425,6 +425,7 @@ void PlannerNode::publishPlan() {
   m.speed_setpoint = plan.speed_setpoint;
   m.cost = std::isfinite(plan.cost) ? plan.cost : 0.0;
   m.compute_time = plan.compute_time;
+  m.passing_distance = plan.passing_distance;
   m.message = plan.message;
   lockstep_.publish(plan_pub_, m);
   path_pub_.publish(path);

@@ -499,6 +499,7 @@ void BatchRun::planPluginShip(PluginShip& ps, double now) {
   const asv::CycleResult r = asv::planningCycle(ps.follower, *ps.plugin, ps.mode, now, targets);
   if (r.replanned && ps.index == 0) {
     rec_.addPlanTime(r.proposed.compute_time);
+    rec_.addPassingDistance(r.proposed.passing_distance);
     writePlan(now, r.why, r.proposed);
   }
   if (r.has_setpoint) {

@@ -125,8 +125,10 @@ void EvaluatorNode::eventCallback(const asv_msgs::SimEvent::ConstPtr& msg) {
 }
 
 void EvaluatorNode::planCallback(const asv_msgs::Plan::ConstPtr& msg) {
-  if (recorder_ && !done_)
+  if (recorder_ && !done_) {
     recorder_->addPlanTime(msg->compute_time);
+    recorder_->addPassingDistance(msg->passing_distance);
+  }
 }
 
 void EvaluatorNode::cmdCallback(const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg) {

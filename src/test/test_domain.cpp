@@ -96,3 +96,21 @@ TEST(WuDomain, RhoAndSafeEncounterDistances) {
   cfg.advance_m = -1;
   EXPECT_THROW(cfg.validate(), std::invalid_argument);
 }
+
+// Kijima and Nakiri (2003), worked with a calculator from the formulas in domain.h: 94 m at 10 kn,
+// log10 V = 1: k_AD = 10^0.4543 = 2.8466, k_DT = 10^0.4646 = 2.9150, sqrt(k_AD^2 + (k_DT/2)^2) = 3.1985:
+// fore 5.2860 L = 496.8 m, aft 3.1430 L = 295.4 m, starboard 3.1150 L = 292.8 m, port 2.3863 L = 224.3 m.
+TEST(KijimaDomain, LengthAndSpeedScaleIt) {
+  const asv::KijimaDomain d = asv::kijimaDomain(94.0, 10.0 * 1852.0 / 3600.0);
+  EXPECT_NEAR(d.fore, 496.8, 0.1);
+  EXPECT_NEAR(d.aft, 295.4, 0.1);
+  EXPECT_NEAR(d.starboard, 292.8, 0.1);
+  EXPECT_NEAR(d.port, 224.3, 0.1);
+  // Linear in the length; a stopped ship counts as making 1 kn (k_AD = 10^0.0952, k_DT = 10^-0.0795):
+  // 50 m: fore 138.0, starboard 51.6 m.
+  const asv::KijimaDomain half = asv::kijimaDomain(47.0, 10.0 * 1852.0 / 3600.0);
+  EXPECT_NEAR(half.fore, d.fore / 2.0, 1e-9);
+  const asv::KijimaDomain still = asv::kijimaDomain(50.0, 0.0);
+  EXPECT_NEAR(still.fore, 138.0, 0.1);
+  EXPECT_NEAR(still.starboard, 51.6, 0.1);
+}

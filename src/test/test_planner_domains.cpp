@@ -53,6 +53,26 @@ TEST(PlannerDomains, AcoHexagonAsItPlans) {
   EXPECT_TRUE(hasVertex(stand_on[0].polygon, {-1852.0, 10000.0}));
 }
 
+// In restricted waters (passing_cap 292.8 m, a 94 m ferry at 10 kn: Kijima and Nakiri's starboard
+// extent) the paper's hexagon is scaled by 292.8 / 1111.2 = 0.26350 before the floor: a 488.0, b 292.8,
+// c 292.8, d 122.0, e 122.0 m; min_separation 185.2: floor 1.3 x 185.2 = 240.76, so every extent grows by
+// 240.76 - 122.0 = 118.76: a 606.8, c 411.6, d 240.8, e 240.8. A stand-on crossing (no doubling), target
+// at (0, 10000) heading south: bow (0, 9393.2), starboard beam (-411.6, 10000), stern (0, 10240.8).
+TEST(PlannerDomains, AcoHexagonScaledInRestrictedWaters) {
+  const asv::AcoPlanner aco;
+  asv::PlanningProblem pr = problemWith(asv::Encounter::CrossingStandOn, 185.2);
+  pr.passing_cap = 292.8;
+  const auto d = aco.domains(pr);
+  ASSERT_EQ(d.size(), 1u);
+  const double k = 292.8 / 1111.2, grow = 1.3 * 185.2 - 463.0 * k;
+  for (const Eigen::Vector2d& v :
+       {Eigen::Vector2d(0.0, 10000.0 - 1852.0 * k - grow), Eigen::Vector2d(-(292.8 + grow), 10000.0),
+        Eigen::Vector2d(0.0, 10000.0 + 240.76)})
+    EXPECT_TRUE(hasVertex(d[0].polygon, v)) << v.transpose();
+  EXPECT_NEAR(10000.0 - 1852.0 * k - grow, 9393.2, 0.1);  // the figures of the comment
+  EXPECT_NEAR(292.8 + grow, 411.6, 0.1);
+}
+
 // A planner without a domain of its own shows the separation rule: 1.1 x 926 = 1018.6 m round the
 // target, 36 vertices; none without a minimum separation.
 TEST(PlannerDomains, OthersShowTheSeparationRule) {

@@ -271,3 +271,29 @@ TEST(Route, ResultReportsTheRouteAndTheMasterFigures) {
   // Keys added later come after wall_time_s.
   EXPECT_LT(json.find("wall_time_s"), json.find("\"human\""));
 }
+
+// Restricted waters (planning.h): land within 1 nm caps the planners' safety distances at the ship's
+// Kijima and Nakiri domain (94 m at 10 kn: 292.8 m to starboard, test_domain); open water and paper mode
+// leave them.
+TEST(Route, FollowerCapsThePassingDistanceInRestrictedWaters) {
+  const StaticObstacle pier{"pier", {{1000, -100}, {1100, -100}, {1100, 100}, {1000, 100}}, nullptr};
+  ShipState own;
+  own.id = "own";
+  own.length = 94.0;
+  own.speed = 10.0 * 1852.0 / 3600.0;
+  EXPECT_NEAR(restrictedPassingDistance(own.position, 94.0, own.speed, {pier}), 292.8, 0.1);
+  EXPECT_EQ(restrictedPassingDistance({-900, 0}, 94.0, own.speed, {pier}), 0.0);  // 1900 m off: open water
+  PlanFollowerConfig cfg;
+  cfg.cruise_speed = own.speed;
+  PlanFollower sea(cfg);
+  sea.setObstacles({pier});
+  sea.setGoal({0, 5000});
+  sea.updateOwn(own);
+  EXPECT_NEAR(sea.buildProblem(0.0, {}).passing_cap, 292.8, 0.1);
+  applyPlannerMode(cfg, PlannerMode::Paper);
+  PlanFollower paper(cfg);
+  paper.setObstacles({pier});
+  paper.setGoal({0, 5000});
+  paper.updateOwn(own);
+  EXPECT_EQ(paper.buildProblem(0.0, {}).passing_cap, 0.0);
+}

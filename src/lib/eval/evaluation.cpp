@@ -255,6 +255,13 @@ void RunRecorder::addPlanTime(double seconds) {
     plan_times_.push_back(seconds);
 }
 
+void RunRecorder::addPassingDistance(double metres) {
+  if (std::isfinite(metres) && metres > 0.0) {
+    passing_.first = std::min(passing_.first, metres);
+    passing_.second = std::max(passing_.second, metres);
+  }
+}
+
 void RunRecorder::addEvent(const SimEvent& e) {
   const int a = index(e.a), b = index(e.b);
   switch (e.type) {
@@ -892,6 +899,10 @@ RunResult RunRecorder::finish() const {
   }
   r.wall_time = wall_time_;
   r.route = route_stats_;
+  if (passing_.second > 0.0) {
+    r.passing_min = passing_.first;
+    r.passing_max = passing_.second;
+  }
   r.route.legs = info_.route.size();
   if (info_.human) {
     r.human = info_.human;

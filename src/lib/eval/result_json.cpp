@@ -117,6 +117,12 @@ std::string toJson(const RunResult& r, bool pretty) {
     rt.add("outside_corridor_s", Json::number(r.route.outside_corridor, kSeconds));
     o.add("route", rt);
   }
+  if (std::isfinite(r.passing_max)) {
+    Json pd = Json::object();
+    pd.add("min", Json::number(r.passing_min, kMetres));
+    pd.add("max", Json::number(r.passing_max, kMetres));
+    o.add("passing_distance_m", pd);
+  }
   if (r.multi_agent) {
     Json ships = Json::array();
     for (const auto& s : r.ships) {

@@ -60,6 +60,7 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   c.stand_on_policy = p.getBool("stand_on_policy", c.stand_on_policy);
   c.replan_on_risk = p.getBool("replan_on_risk", c.replan_on_risk);
   c.risk_clear_time = p.getDouble("risk_clear_time", c.risk_clear_time);
+  c.restricted_passing = p.getBool("restricted_passing", c.restricted_passing);
   c.degraded_plan_hold = p.getDouble("degraded_plan_hold", c.degraded_plan_hold);
   c.min_obstacle_clearance_m = p.getDouble("min_obstacle_clearance_m", c.min_obstacle_clearance_m);
   c.limits.max_speed = p.getDouble("max_speed", c.limits.max_speed);
@@ -276,6 +277,7 @@ void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once
     return;
   cfg.stand_on_policy = false;
   cfg.min_separation = 0.0;
+  cfg.restricted_passing = false;
   if (plans_once)
     cfg.replan_on_risk = false;
 }
@@ -426,6 +428,8 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   pr.min_separation = cfg_.min_separation;
   pr.min_obstacle_clearance = cfg_.min_obstacle_clearance_m;
   pr.prediction_horizon = cfg_.prediction_horizon;
+  if (cfg_.restricted_passing)
+    pr.passing_cap = restrictedPassingDistance(pr.own.position, pr.own.length, legSpeed(), obstacles_);
   for (const auto& t : targets) {
     if (t.state.id == own_->id || !t.state.finite())
       continue;

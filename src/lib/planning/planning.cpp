@@ -8,6 +8,16 @@
 
 namespace asv {
 
+double restrictedPassingDistance(const Eigen::Vector2d& position, double length, double speed,
+                                 const std::vector<StaticObstacle>& obstacles) {
+  double land = std::numeric_limits<double>::infinity();
+  for (const StaticObstacle& o : obstacles)
+    land = std::min(land, obstacleDistance(o, position, position));
+  if (!(land < kOpenWater))
+    return 0.0;
+  return kijimaDomain(length > 0.0 ? length : 100.0, speed).starboard;
+}
+
 const char* toString(PlanStatus s) {
   switch (s) {
     case PlanStatus::Ok:

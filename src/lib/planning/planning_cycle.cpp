@@ -1,5 +1,6 @@
 #include "asv_core/planning/planning_cycle.h"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 
@@ -31,6 +32,8 @@ void plan(PlanFollower& follower, PlannerAlgorithm& planner, PlannerMode mode, d
                                              options.overrun_factor, budget));
   }
   r.proposed.compute_time = spent;
+  if (problem.passing_cap > 0.0)
+    r.proposed.passing_distance = std::max(problem.passing_cap, kSeparationMargin * problem.min_separation);
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
 #include "asv_core/risk/domain.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "asv_core/common/units.h"
 
 namespace asv {
 
@@ -92,6 +95,16 @@ SafeEncounter wuSafeEncounter(double theta, double target_speed, const SafeEncou
   s.td_m = std::max(0.0, target_speed) * cfg.turn90_time_s + cfg.advance_m;  // Td = V_T t + Ad
   s.d2_m = s.d1_m + s.td_m;                                                  // eq. (11)
   return s;
+}
+
+KijimaDomain kijimaDomain(double length_m, double speed_mps) {
+  const double v_kn = std::max(1.0, mpsToKnots(speed_mps));
+  const double lg = std::log10(v_kn);
+  const double k_ad = std::pow(10.0, 0.3591 * lg + 0.0952);
+  const double k_dt = std::pow(10.0, 0.5441 * lg - 0.0795);
+  const double r = std::sqrt(k_ad * k_ad + 0.25 * k_dt * k_dt);
+  return {(1.0 + 1.34 * r) * length_m, (1.0 + 0.67 * r) * length_m, (0.2 + k_dt) * length_m,
+          (0.2 + 0.75 * k_dt) * length_m};
 }
 
 }  // namespace asv

@@ -202,6 +202,10 @@ struct RunResult {
     double max_xte = 0.0;           // [m]
     double outside_corridor = 0.0;  // [s]
   } route;
+  // [m] The smallest and largest passing distance the own ship's plans kept in restricted waters
+  // (addPassingDistance); NaN when every plan was made in open water.
+  double passing_min = std::numeric_limits<double>::quiet_NaN();
+  double passing_max = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Safety score of a passing range r (see EvaluationConfig).
@@ -220,6 +224,9 @@ public:
   void addSetpoint(double t, const std::string& ship, double course);
   // Wall time of one plan of the own ship [s] (plan_time_ms).
   void addPlanTime(double seconds);
+  // The passing distance one plan of the own ship kept in restricted waters (Plan::passing_distance;
+  // 0: open water, not counted): passing_distance_m.
+  void addPassingDistance(double metres);
   void addEvent(const SimEvent& event);
   void setWallTime(double seconds) { wall_time_ = seconds; }
 
@@ -321,6 +328,7 @@ private:
   std::vector<double> arrival_;                // arrival time per ship (NaN: none)
   std::vector<double> plan_times_;
   RunResult::RouteStats route_stats_;
+  std::pair<double, double> passing_{std::numeric_limits<double>::infinity(), 0.0};  // (min, max) [m]
   double route_last_t_ = std::numeric_limits<double>::quiet_NaN();  // the own ship's previous sample
   double wall_time_ = 0.0;
   double last_t_ = -1e300;

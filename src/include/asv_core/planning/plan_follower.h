@@ -55,6 +55,9 @@ struct PlanFollowerConfig {
   // replans, so a trajectory computed once with every target in view is sailed as computed (the
   // experiments of Lazarowska 2015 and Wu et al. 2022 plan once per encounter).
   bool replan_on_risk = true;
+  // In restricted waters (land within 1 nm), the planners' sea-scale safety distances are capped at the
+  // ship's Kijima and Nakiri (2003) domain (restrictedPassingDistance, planning.h). Off in paper mode.
+  bool restricted_passing = true;
   double risk_clear_time = 60.0;  // [s] a target's risk must stay none, with its CPA past, this
                                   // long before a new rise replans again (tracking noise flickers
                                   // round thresholds; a plan that works lowers the risk)

@@ -2,6 +2,7 @@
 // adapters from these structs to the ROS messages; the batch runner calls the same algorithms.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <limits>
@@ -71,7 +72,24 @@ struct PlanningProblem {
   // (planUnderSharedRules) refuses a plan that comes closer.
   double min_obstacle_clearance = 0.0;
   double prediction_horizon = 1200.0;  // [s] how far ahead a plan without waypoints is followed
+  // [m] In restricted waters, the largest passing distance a planner's own safety distance may ask for
+  // (restrictedPassingDistance; the plan follower sets it in sea mode): the sea-scale distances of the
+  // papers (MOPSO's 1 nm d_min, ACO's 1 nm hexagon, GA's SDA) cannot be kept in a harbour, where they put
+  // every ship inside the domain. 0: open water, the planners' own. The floor stays
+  // kSeparationMargin x min_separation.
+  double passing_cap = 0.0;
 };
+
+// The passing distance in restricted waters (PlanningProblem::passing_cap): 0 in open water (no land
+// within kOpenWater of the ship); else the starboard extent of her Kijima and Nakiri (2003) domain for
+// restricted waters (domain.h: from her length and speed), the wider of its two sides, kept whichever
+// side a ship passes on. Her length 0: 100 m (our choice, a mid-size ship).
+double restrictedPassingDistance(const Eigen::Vector2d& position, double length, double speed,
+                                 const std::vector<StaticObstacle>& obstacles);
+// A planner's own safety distance under the problem's cap (itself when there is none).
+inline double cappedPassing(double own, const PlanningProblem& p) {
+  return p.passing_cap > 0.0 ? std::min(own, p.passing_cap) : own;
+}
 
 // The speed a plan that keeps the ship's speed asks for: PlanningProblem::cruise_speed, else own.speed.
 inline double keptSpeed(const PlanningProblem& p) {
@@ -123,6 +141,9 @@ struct Plan {
   double cost = 0.0;                       // algorithm-specific objective (lower is better)
   double compute_time = 0.0;               // [s] wall time spent
   std::string message;                     // why, for humans
+  // [m] the passing distance in restricted waters the plan was made under (PlanningProblem::passing_cap
+  // raised to the floor, kSeparationMargin x min_separation); 0: open water, the planner's own.
+  double passing_distance = 0.0;
 };
 
 // A planner's mode, key `mode`: `sea` (default), the published method with the stack's named extensions

@@ -572,8 +572,16 @@ std::string badInput(const PlanningProblem& problem, const Eigen::Vector2d& goal
 // port), which is what makes ACO pass port to port (Rule 14) and astern of a crossing ship (Rule 15).
 // ACO's best trajectory grazes the domain boundary and the kinematic turns of eq. (6) flown by the
 // autopilot cut corners by up to a few hundred metres, so ACO takes a wider margin than the other
-// planners: 1.3 x min_separation (our choice; docs/results/aco.md).
-HexagonDomainConfig inflatedDomain(HexagonDomainConfig domain, double min_separation, bool inflate) {
+// planners: 1.3 x min_separation (our choice; docs/results/aco.md). In restricted waters the paper's
+// hexagon (1 nm ahead, 0.6 nm to starboard) is first scaled down, whole, until its starboard extent is
+// the problem's passing cap (planning.h), so that it keeps its shape.
+HexagonDomainConfig inflatedDomain(HexagonDomainConfig domain, const PlanningProblem& problem, bool inflate) {
+  if (problem.passing_cap > 0.0 && problem.passing_cap < domain.c) {
+    const double k = problem.passing_cap / domain.c;
+    for (double* x : {&domain.a, &domain.b, &domain.c, &domain.d, &domain.e})
+      *x *= k;
+  }
+  const double min_separation = problem.min_separation;
   if (!inflate || !(min_separation > 0.0))
     return domain;
   const double floor = 1.3 * min_separation;
@@ -933,7 +941,7 @@ Plan AcoRun::plan() {
   const double dist = (goal - problem_.own.position).norm();
   if (dist / cfg_.row_spacing > kMaxRows)
     return fail("final waypoint too far for the grid (" + fmt("%.0f", dist / cfg_.row_spacing) + " rows)");
-  const AcoEnvironment env(problem_, inflatedDomain(cfg_.domain, problem_.min_separation, cfg_.inflate),
+  const AcoEnvironment env(problem_, inflatedDomain(cfg_.domain, problem_, cfg_.inflate),
                            cfg_.colregs_factor);
   search_.emplace(problem_, cfg_, env, speed_);
   const Motion& m0 = search_->initial();
@@ -963,7 +971,7 @@ Plan AcoPlanner::plan(const PlanningProblem& problem) {
 }
 
 std::vector<TargetDomain> AcoPlanner::domains(const PlanningProblem& problem) const {
-  const HexagonDomainConfig base = inflatedDomain(cfg_.domain, problem.min_separation, cfg_.inflate);
+  const HexagonDomainConfig base = inflatedDomain(cfg_.domain, problem, cfg_.inflate);
   std::vector<TargetDomain> out;
   for (const PlannerTarget& t : problem.targets)
     out.push_back({t.state.id, HexagonDomain(targetDomain(t, base, cfg_.colregs_factor))

@@ -173,6 +173,7 @@ GaFitness::GaFitness(const PlanningProblem& problem, const GaConfig& cfg) : cfg_
   candidate_cri_.zero_when_diverging = false;
   own_.id.clear();  // the candidate copies made per evaluation then never allocate
   sda_floor_ = kSeparationMargin * std::max(0.0, problem.min_separation);
+  passing_cap_ = problem.passing_cap;
   const Eigen::Vector2d next = nextWayPoint(problem);
   reference_course_ = (next - own_.position).norm() > 1e-6 ? trueBearing(own_.position, next) : own_.course;
   next_ = next;
@@ -248,8 +249,9 @@ GaCostTerms GaFitness::terms(double alteration) const {
     const bool ahead_in_time = cpa.relative_motion && cpa.tcpa > 0.0;
     // Eq. (7): DCPA >= SDA, SDA = d1 = 1.5 rho(theta) of eq. (10), for a CPA still to come within the
     // attention range (farther targets are not yet part of the encounter).
-    // SDA is floored at the situation's demanded passing distance (PlanningProblem::min_separation).
-    const double sda = std::max(r.d1, sda_floor_);
+    // SDA is capped in restricted waters (PlanningProblem::passing_cap) and floored at the situation's
+    // demanded passing distance (PlanningProblem::min_separation).
+    const double sda = std::max(passing_cap_ > 0.0 ? std::min(r.d1, passing_cap_) : r.d1, sda_floor_);
     if ((ahead_in_time || !cpa.relative_motion) && cpa.range <= cfg_.cri.attention_range_m && sda > 0.0 &&
         cpa.dcpa < sda)
       shortfall += (sda - cpa.dcpa) / sda;

@@ -764,6 +764,7 @@ std::vector<MopsoSolution> MopsoPlanner::optimise(const MopsoContext& ctx, const
 Plan MopsoPlanner::plan(const PlanningProblem& problem) {
   // d_min of eq. (8) is at least the situation's demanded passing distance (planning.h).
   MopsoConfig cfg = cfg_;
+  cfg.d_min_m = cappedPassing(cfg.d_min_m, problem);  // restricted waters (planning.h)
   if (cfg.inflate)
     cfg.d_min_m = std::max(cfg.d_min_m, kSeparationMargin * std::max(0.0, problem.min_separation));
   const Deadline deadline(problem.time_budget);

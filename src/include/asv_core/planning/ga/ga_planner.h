@@ -184,6 +184,7 @@ public:
 
 private:
   double sda_floor_ = 0.0;
+  double passing_cap_ = 0.0;  // [m] PlanningProblem::passing_cap (0: open water)
   struct Target {
     ShipState state;
     Eigen::Vector2d velocity;
