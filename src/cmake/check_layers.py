@@ -27,6 +27,7 @@ LIBRARIES = {
     "Boost.Geometry": (re.compile(r"^boost/geometry"), ["common"]),
     "GDAL": (re.compile(r"^(gdal|ogr|cpl)[a-z_]*\.h$"), ["charts"]),
     "yaml-cpp": (re.compile(r"^yaml-cpp/"), ["world", "sim"]),
+    "tinyxml2": (re.compile(r"^tinyxml2\.h$"), ["world"]),
 }
 STD = re.compile(r"^[a-z_]+$")
 POSIX = re.compile(r"^(sys|netinet|arpa)/[a-z_]+\.h$|^(unistd|fcntl|termios|poll|netdb)\.h$")

@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 
 #include "asv_core/common/units.h"
 #include "asv_core/eval/evaluation.h"
 #include "asv_core/planning/plan_follower.h"
 #include "asv_core/world/route.h"
+#include "asv_core/world/route_file.h"
 #include "asv_core/world/scenario.h"
 #include "asv_core/world/scenario_write.h"
 
@@ -283,17 +286,121 @@ TEST(Route, FollowerCapsThePassingDistanceInRestrictedWaters) {
   own.speed = 10.0 * 1852.0 / 3600.0;
   EXPECT_NEAR(restrictedPassingDistance(own.position, 94.0, own.speed, {pier}), 292.8, 0.1);
   EXPECT_EQ(restrictedPassingDistance({-900, 0}, 94.0, own.speed, {pier}), 0.0);  // 1900 m off: open water
+  // A 19 m launch at 3 kn: 33 m by the domain (k_AD 1.84, k_DT 1.52), the 50 m floor.
+  EXPECT_EQ(restrictedPassingDistance(own.position, 19.0, 3.0 * 1852.0 / 3600.0, {pier}), 50.0);
   PlanFollowerConfig cfg;
   cfg.cruise_speed = own.speed;
+  cfg.min_separation = 926.0;  // a sea-scale threshold: lowered to the domain here
   PlanFollower sea(cfg);
   sea.setObstacles({pier});
   sea.setGoal({0, 5000});
   sea.updateOwn(own);
   EXPECT_NEAR(sea.buildProblem(0.0, {}).passing_cap, 292.8, 0.1);
+  EXPECT_NEAR(sea.buildProblem(0.0, {}).min_separation, 292.8, 0.1);
   applyPlannerMode(cfg, PlannerMode::Paper);
   PlanFollower paper(cfg);
   paper.setObstacles({pier});
   paper.setGoal({0, 5000});
   paper.updateOwn(own);
   EXPECT_EQ(paper.buildProblem(0.0, {}).passing_cap, 0.0);
+  EXPECT_EQ(paper.buildProblem(0.0, {}).min_separation, 0.0);  // paper mode: the paper's own
+}
+
+namespace {
+
+const char* kGpx = R"(<?xml version="1.0" encoding="UTF-8"?>
+<gpx version="1.1" creator="OpenCPN" xmlns="http://www.topografix.com/GPX/1/1">
+  <rte>
+    <name>Narrows</name>
+    <rtept lat="40.600" lon="-74.050"><name>001</name></rtept>
+    <rtept lat="40.610" lon="-74.050"><name>002</name></rtept>
+  </rte>
+</gpx>
+)";
+
+const char* kRtz = R"(<?xml version="1.0" encoding="UTF-8"?>
+<route xmlns="http://www.cirm.org/RTZ/1/0" version="1.0">
+  <routeInfo routeName="Kill Van Kull"/>
+  <waypoints>
+    <defaultWaypoint radius="0.1"><leg portsideXTD="0.1" starboardXTD="0.1"/></defaultWaypoint>
+    <waypoint id="1"><position lat="40.600" lon="-74.050"/></waypoint>
+    <waypoint id="2"><position lat="40.610" lon="-74.050"/><leg starboardXTD="0.05" speedMax="8"/></waypoint>
+  </waypoints>
+</route>
+)";
+
+}  // namespace
+
+// Both files draw the same two waypoints: the origin, and 0.01 deg north of it (1110.5 m at 40.6 N,
+// test above). RTZ's legs: XTD in nautical miles (0.1 nm = 185.2 m by default, 0.05 nm = 92.6 m on the
+// second leg), speedMax in knots (8 kn = 4.1156 m/s).
+TEST(Route, GpxAndRtzFilesAsPlottersWriteThem) {
+  const LocalFrame frame(40.600, -74.050);
+  std::vector<int> lines;
+  const Route gpx = parseRouteXml(kGpx, "narrows.gpx", frame, &lines);
+  ASSERT_EQ(gpx.size(), 2u);
+  EXPECT_NEAR(gpx[0].position.norm(), 0.0, 1e-6);
+  EXPECT_NEAR(gpx[1].position.y(), 1110.5, 0.5);
+  EXPECT_EQ(gpx[1].speed, 0.0);
+  EXPECT_EQ(lines, (std::vector<int>{5, 6}));
+  const Route rtz = parseRouteXml(kRtz, "kvk.rtz", frame);
+  ASSERT_EQ(rtz.size(), 2u);
+  EXPECT_NEAR(rtz[1].position.y(), 1110.5, 0.5);
+  EXPECT_DOUBLE_EQ(rtz[0].port_xtd, 185.2);
+  EXPECT_DOUBLE_EQ(rtz[1].port_xtd, 185.2);  // the default
+  EXPECT_DOUBLE_EQ(rtz[1].starboard_xtd, 92.6);
+  EXPECT_NEAR(rtz[1].speed, 8.0 * 1852.0 / 3600.0, 1e-12);
+  EXPECT_EQ(rtz[0].speed, 0.0);
+}
+
+TEST(Route, RouteFileErrorsNameFileAndLine) {
+  const LocalFrame frame(40.600, -74.050);
+  auto error = [&](std::string text, const std::string& from, const std::string& to) {
+    if (!from.empty())
+      text.replace(text.find(from), from.size(), to);
+    try {
+      parseRouteXml(text, "r.xml", frame);
+    } catch (const RouteFileError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error(kGpx, "lat=\"40.610\"", "lat=\"91\"").find("r.xml:6: latitude/longitude out of range"),
+            std::string::npos);
+  EXPECT_NE(
+      error(kGpx, "lon=\"-74.050\"><name>002", "><name>002").find("r.xml:6: a waypoint needs lat and lon"),
+      std::string::npos);
+  EXPECT_NE(error(kRtz, "speedMax=\"8\"", "speedMax=\"fast\"").find("r.xml:7: 'speedMax' is not a number"),
+            std::string::npos);
+  EXPECT_NE(error(kRtz, "starboardXTD=\"0.05\"", "starboardXTD=\"-1\"").find("r.xml:7: starboardXTD must be"),
+            std::string::npos);
+  EXPECT_NE(error(kGpx, "</rte>", "").find("r.xml:"), std::string::npos);  // not well-formed
+  EXPECT_NE(error(kGpx, "<rte>", "<trk>").find("not well-formed"), std::string::npos);
+  EXPECT_NE(error("<kml/>", "", "").find("r.xml:1: not a route file: root <kml>"), std::string::npos);
+  EXPECT_NE(error("<gpx><rte/></gpx>", "", "").find("the route has no waypoints"), std::string::npos);
+  EXPECT_THROW(readRouteFile("/nonexistent/route.rtz", frame), RouteFileError);
+}
+
+// A scenario's route_file, relative to the scenario's folder; a leg over land names the route file's line.
+TEST(Route, ScenarioRouteFile) {
+  const std::string dir = testing::TempDir();
+  std::ofstream(dir + "kvk.rtz") << kRtz;
+  std::string text = kRouteScenario;
+  text.replace(text.find("  route:"), text.find("human:") - text.find("  route:"), "  route_file: kvk.rtz\n");
+  const Scenario s = parseScenario(text, dir + "scenario.yaml");
+  ASSERT_EQ(s.own.route.size(), 2u);
+  EXPECT_NEAR(s.own.goal->y(), 1110.5, 0.5);  // the scenario's origin is the route's first waypoint
+  EXPECT_DOUBLE_EQ(s.own.route[1].starboard_xtd, 92.6);
+  const std::string islet =
+      "static_obstacles:\n  - name: islet\n    polygon: [{x_m: -50, y_m: 500}, {x_m: 50, y_m: 500}, "
+      "{x_m: 0, y_m: 600}]\n";
+  try {
+    parseScenario(text + islet, dir + "scenario.yaml");
+    ADD_FAILURE() << "no error for a route over an islet";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find(dir + "kvk.rtz:7: 'own_ship.route[1]': leg 2"), std::string::npos)
+        << e.what();
+  }
+  text.replace(text.find("kvk.rtz"), 7, "none.rtz");
+  EXPECT_THROW(parseScenario(text, dir + "scenario.yaml"), ScenarioError);
 }

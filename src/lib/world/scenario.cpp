@@ -10,6 +10,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "asv_core/common/units.h"
+#include "asv_core/world/route_file.h"
 
 namespace asv {
 
@@ -195,6 +196,7 @@ struct RawShip {
   std::vector<PointSpec> waypoints;
   std::vector<std::pair<double, PointSpec>> track;  // (t_s, point)
   std::vector<PointSpec> route;
+  std::string route_file;  // own_ship.route_file, resolved against the scenario's folder
   YAML::Node node;
 };
 
@@ -261,7 +263,7 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
                                 "beam_m", "position", "course_deg",   "speed_kn",  "speed_mps",
                                 "goal",   "planner",  "goal_radius_m"};
   if (own)
-    allowed.insert("route");
+    allowed.insert({"route", "route_file"});
   else
     allowed.insert({"behaviour", "waypoints", "track"});
   c.onlyKeys(n, where, allowed);
@@ -306,8 +308,16 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
     r.goal = readPoint(c, n["goal"], w + "goal", true);
   if (n["route"])
     readRoute(c, n, w, r);
+  if (n["route_file"]) {
+    if (n["route"] || n["goal"])
+      c.fail(n["route_file"], w + "route_file", "give one of goal, route or route_file");
+    r.route_file = c.text(n, "route_file", w);
+    const auto slash = c.source().find_last_of('/');
+    if (!r.route_file.empty() && r.route_file[0] != '/' && slash != std::string::npos)
+      r.route_file = c.source().substr(0, slash + 1) + r.route_file;
+  }
   if (n["goal_radius_m"]) {
-    if (!n["goal"] && !n["route"])
+    if (!n["goal"] && !n["route"] && !n["route_file"])
       c.fail(n["goal_radius_m"], w + "goal_radius_m", "needs a goal or a route");
     s.goal_radius = c.number(n, "goal_radius_m", w);
     if (!(s.goal_radius > 0.0) || s.goal_radius > 10000.0)
@@ -490,6 +500,14 @@ void readShips(const Ctx& c, const YAML::Node& root, Scenario& s) {
       r.ship.track.push_back({t, resolve(p, frame, own_start)});
     for (size_t k = 0; k < r.route.size(); ++k)
       r.ship.route[k].position = resolve(r.route[k], frame, own_start);
+    if (!r.route_file.empty()) {
+      try {
+        r.ship.route = readRouteFile(r.route_file, frame, &r.ship.route_lines);
+      } catch (const RouteFileError& e) {
+        c.fail(r.node["route_file"], "own_ship.route_file", e.what());
+      }
+      r.ship.route_source = r.route_file;
+    }
     if (!r.ship.route.empty())
       r.ship.goal = r.ship.route.back().position;
     return r.ship;
@@ -684,7 +702,8 @@ void checkRouteOffLand(const Scenario& s) {
     if (land.empty() && obstacleDistance(o, from, route[leg].position) <= 0.0)
       land = o.name;
   const auto line = static_cast<size_t>(leg) < s.own.route_lines.size() ? s.own.route_lines[leg] : 0;
-  throw ScenarioError(s.source + (line > 0 ? ":" + std::to_string(line) : "") + ": 'own_ship.route[" +
+  const std::string& file = s.own.route_source.empty() ? s.source : s.own.route_source;
+  throw ScenarioError(file + (line > 0 ? ":" + std::to_string(line) : "") + ": 'own_ship.route[" +
                       std::to_string(leg) + "]': leg " + std::to_string(leg + 1) +
                       " (to this waypoint from " +
                       (leg == 0 ? std::string("the start") : "waypoint " + std::to_string(leg - 1)) +

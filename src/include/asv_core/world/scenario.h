@@ -57,6 +57,7 @@ struct ScenarioShip {
   // `goal`. Empty: straight for the goal.
   Route route;
   std::vector<int> route_lines;  // the file's line of each route point (errors found after parsing)
+  std::string route_source;      // the route file it came from (key route_file); empty: the scenario
 };
 
 // What the master who sailed the window did, from the same log (key human; real-traffic scenarios):
