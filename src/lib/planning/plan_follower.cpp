@@ -428,8 +428,12 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   pr.min_separation = cfg_.min_separation;
   pr.min_obstacle_clearance = cfg_.min_obstacle_clearance_m;
   pr.prediction_horizon = cfg_.prediction_horizon;
-  if (cfg_.restricted_passing)
+  if (cfg_.restricted_passing) {
     pr.passing_cap = restrictedPassingDistance(pr.own.position, pr.own.length, legSpeed(), obstacles_);
+    // The ship's own domain, not the situation's sea-scale minimum, is what she can keep here.
+    if (pr.passing_cap > 0.0 && pr.min_separation > pr.passing_cap)
+      pr.min_separation = pr.passing_cap;
+  }
   for (const auto& t : targets) {
     if (t.state.id == own_->id || !t.state.finite())
       continue;

@@ -15,7 +15,7 @@ double restrictedPassingDistance(const Eigen::Vector2d& position, double length,
     land = std::min(land, obstacleDistance(o, position, position));
   if (!(land < kOpenWater))
     return 0.0;
-  return kijimaDomain(length > 0.0 ? length : 100.0, speed).starboard;
+  return std::max(kRestrictedPassingFloor, kijimaDomain(length > 0.0 ? length : 100.0, speed).starboard);
 }
 
 const char* toString(PlanStatus s) {

@@ -346,6 +346,10 @@ struct OwnPlace {
 OwnPlace ownPlace(const std::vector<AisLogReport>& log, const AisScenarioOptions& o) {
   OwnPlace p{o.own_start.value_or(GeoPoint{}), o.own_goal.value_or(GeoPoint{}), o.own_course_deg,
              o.own_speed_kn, o.own_length_m.value_or(120.0)};
+  // In a logged vessel's place, a vessel that reports no length is taken as the targets are: mostly
+  // harbour craft (default_length_m), not a 120 m ship whose domain fills the channel.
+  if (o.own_mmsi != 0 && !o.own_length_m)
+    p.length_m = o.default_length_m;
   if (o.own_mmsi == 0)
     return p;
   // Her reports only, in a frame round one of them to interpolate; the answer goes back to

@@ -73,17 +73,23 @@ struct PlanningProblem {
   double min_obstacle_clearance = 0.0;
   double prediction_horizon = 1200.0;  // [s] how far ahead a plan without waypoints is followed
   // [m] In restricted waters, the largest passing distance a planner's own safety distance may ask for
-  // (restrictedPassingDistance; the plan follower sets it in sea mode): the sea-scale distances of the
-  // papers (MOPSO's 1 nm d_min, ACO's 1 nm hexagon, GA's SDA) cannot be kept in a harbour, where they put
-  // every ship inside the domain. 0: open water, the planners' own. The floor stays
-  // kSeparationMargin x min_separation.
+  // (restrictedPassingDistance; the plan follower sets it in sea mode, and lowers min_separation to it
+  // there): the sea-scale distances of the papers (MOPSO's 1 nm d_min, ACO's 1 nm hexagon, GA's SDA) and
+  // a scenario's evaluation threshold cannot be kept in a harbour, where they put every ship inside the
+  // domain. 0: open water, the planners' own. The floor stays kSeparationMargin x min_separation.
   double passing_cap = 0.0;
 };
+
+// [m] The smallest passing distance planned for in restricted waters: our choice, 50 m. Harbour GNSS
+// and AIS positions are each good to some 10-30 m, and a planned pass must outlast both errors and the
+// ships' half-beams; masters in the New York hour pass launches at 20-120 m.
+constexpr double kRestrictedPassingFloor = 50.0;
 
 // The passing distance in restricted waters (PlanningProblem::passing_cap): 0 in open water (no land
 // within kOpenWater of the ship); else the starboard extent of her Kijima and Nakiri (2003) domain for
 // restricted waters (domain.h: from her length and speed), the wider of its two sides, kept whichever
-// side a ship passes on. Her length 0: 100 m (our choice, a mid-size ship).
+// side a ship passes on, at least kRestrictedPassingFloor. Her length 0: 100 m (our choice, a mid-size
+// ship).
 double restrictedPassingDistance(const Eigen::Vector2d& position, double length, double speed,
                                  const std::vector<StaticObstacle>& obstacles);
 // A planner's own safety distance under the problem's cap (itself when there is none).

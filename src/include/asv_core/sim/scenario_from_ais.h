@@ -58,7 +58,8 @@ struct AisScenarioOptions {
   std::optional<GeoPoint> own_start, own_goal;
   std::optional<double> own_course_deg;  // default: towards the goal
   double own_speed_kn = 10.0;
-  std::optional<double> own_length_m;  // default: the logged vessel's length, else 120 m
+  std::optional<double>
+      own_length_m;  // default 120 m; with own_mmsi the logged vessel's, else default_length_m
   std::string own_model = "kinematic";
   std::string planner;  // empty: none in the file (given at run time)
   // Targets: every vessel that comes within `radius_m` of the own ship's straight route during the window.
