@@ -119,7 +119,9 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
   follower_config_ = followerConfig(p, lockstep_.enabled(), mode_, *plugin_);
   follower_ = std::make_unique<asv::PlanFollower>(follower_config_);  // validates: throws on a bad value
   if (!scenario_route_.empty())
-    follower_->setRoute(scenario_route_);
+    route_ = scenario_route_;
+  if (!route_.empty())
+    follower_->setRoute(route_);
   else if (p.has_goal)
     follower_->setGoal(p.goal);
   follower_->setObstacles(allObstacles());
@@ -177,6 +179,7 @@ void PlannerNode::start() {
   risk_sub_ = lockstep_.subscribe("risk", 10, &PlannerNode::riskCallback, this, false);
   targets_sub_ = lockstep_.subscribe("targets", 10, &PlannerNode::targetsCallback, this, false);
   goal_sub_ = nh_.subscribe("goal", 1, &PlannerNode::goalCallback, this);
+  route_sub_ = nh_.subscribe("route", 1, &PlannerNode::routeCallback, this);
   alarms_sub_ = nh_.subscribe("alarms", 50, &PlannerNode::alarmCallback, this);
   if (params_.use_aids)
     aids_sub_ = nh_.subscribe("aids_to_navigation", 1, &PlannerNode::aidsCallback, this);
@@ -189,6 +192,9 @@ void PlannerNode::start() {
   cmd_pub_ = nh_.advertise<asv_msgs::CourseSpeedSetpoint>("cmd", 5);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("plan_markers", 2, true);
   domains_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("domains", 2);
+  route_markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("route_markers", 1, true);
+  route_status_pub_ = nh_.advertise<asv_msgs::RouteStatus>("route_status", 5);
+  publishRoute();
   lockstep_.every(1.0 / params_.setpoint_rate, [this] { timerCallback(); });
   if (!lockstep_.enabled())  // a lost input is acted on between set-points too
     lockstep_.every(asv_ros::kWatchPeriod, [this] { watchJob(); });
@@ -241,7 +247,9 @@ void PlannerNode::checkClock() {
     risk_.reset();
     targets_.reset();
     follower_ = std::make_unique<asv::PlanFollower>(follower_config_);
-    if (params_.has_goal)
+    if (!route_.empty())
+      follower_->setRoute(route_);  // sailed again from the leg nearest to her
+    else if (params_.has_goal)
       follower_->setGoal(params_.goal);
     follower_->setObstacles(allObstacles());
     return std::string("own ship, targets, risk and plan dropped");
@@ -293,6 +301,113 @@ void PlannerNode::alarmCallback(const asv_msgs::Alarm::ConstPtr& msg) {
     upstream_alarms_[src] = msg;
 }
 
+void PlannerNode::routeCallback(const nav_msgs::Path::ConstPtr& msg) {
+  tf2::Transform t;
+  const std::string& frame = msg->header.frame_id;
+  if (!frame.empty() && !frames_.get(frame, msg->header.stamp, t, true)) {
+    ROS_WARN("planner_node: route in frame '%s', which tf2 does not connect to '%s': ignored", frame.c_str(),
+             params_.frame_id.c_str());
+    return;
+  }
+  asv::Route route;
+  for (size_t k = 0; k < msg->poses.size(); ++k) {
+    const geometry_msgs::Pose p =
+        frame.empty() ? msg->poses[k].pose : asv_ros::transformPose(t, msg->poses[k].pose);
+    if (!std::isfinite(p.position.x) || !std::isfinite(p.position.y)) {
+      ROS_WARN("planner_node: route pose %zu is not finite: route ignored", k);
+      return;
+    }
+    asv::RouteWaypoint w;
+    w.position = {p.position.x, p.position.y};
+    route.push_back(w);
+  }
+  if (route.empty()) {
+    ROS_WARN("planner_node: an empty route: ignored (send a goal to steer for one point)");
+    return;
+  }
+  const int leg = asv::legOnLand(route, own_ ? own_->position : route.front().position, allObstacles());
+  if (leg >= 0) {
+    ROS_ERROR("planner_node: route refused: leg %d (to waypoint %d) crosses land", leg + 1, leg);
+    return;
+  }
+  setRoute(route, "topic " + route_sub_.getTopic());
+}
+
+void PlannerNode::setRoute(const asv::Route& route, const std::string& from) {
+  route_ = route;
+  follower_->setRoute(route_);
+  ROS_INFO("planner_node: route of %zu waypoint(s) from %s", route_.size(), from.c_str());
+  publishRoute();
+}
+
+void PlannerNode::publishRoute() {
+  visualization_msgs::MarkerArray arr;
+  visualization_msgs::Marker line, corridor, points;
+  line.header.frame_id = params_.frame_id;
+  line.ns = params_.ship + "/route";
+  line.action = route_.empty() ? visualization_msgs::Marker::DELETEALL : visualization_msgs::Marker::ADD;
+  line.type = visualization_msgs::Marker::LINE_STRIP;
+  line.pose.orientation.w = 1.0;
+  line.scale.x = asv_ros::pixelsToMetres(2.0);
+  line.color.r = line.color.g = 1.0f;  // yellow, as a chart plotter draws the active route
+  line.color.a = 0.9f;
+  if (route_.empty()) {
+    arr.markers.push_back(line);
+    route_markers_pub_.publish(arr);
+    return;
+  }
+  corridor = points = line;
+  corridor.id = 1;
+  corridor.type = visualization_msgs::Marker::LINE_LIST;
+  corridor.color.a = 0.4f;
+  points.id = 2;
+  points.type = visualization_msgs::Marker::SPHERE_LIST;
+  points.scale.x = points.scale.y = points.scale.z = asv_ros::pixelsToMetres(8.0);
+  auto point = [](const Eigen::Vector2d& p) {
+    geometry_msgs::Point q;
+    q.x = p.x();
+    q.y = p.y();
+    return q;
+  };
+  for (size_t k = 0; k < route_.size(); ++k) {
+    line.points.push_back(point(route_[k].position));
+    points.points.push_back(point(route_[k].position));
+    if (k == 0)
+      continue;
+    // The corridor's two edges along leg k (port to the left of its direction, starboard to the right).
+    const Eigen::Vector2d a = route_[k - 1].position, b = route_[k].position, d = (b - a).normalized();
+    const Eigen::Vector2d right(d.y(), -d.x());
+    for (const double off : {-route_[k].port_xtd, route_[k].starboard_xtd})
+      if (off != 0.0 && (b - a).norm() > 0.0) {
+        corridor.points.push_back(point(a + right * off));
+        corridor.points.push_back(point(b + right * off));
+      }
+  }
+  arr.markers.push_back(line);
+  arr.markers.push_back(points);
+  if (!corridor.points.empty())
+    arr.markers.push_back(corridor);
+  route_markers_pub_.publish(arr);
+}
+
+void PlannerNode::publishRouteStatus() {
+  const auto& progress = follower_->routeProgress();
+  if (!progress || !own_)
+    return;
+  asv_msgs::RouteStatus s;
+  s.header.stamp = ros::Time::now();
+  s.header.frame_id = params_.frame_id;
+  s.ship = params_.ship;
+  s.waypoints = static_cast<uint32_t>(progress->route().size());
+  s.active_waypoint = static_cast<uint32_t>(progress->active());
+  s.cross_track_error = progress->crossTrackError(own_->position);
+  s.distance_to_waypoint = (progress->target().position - own_->position).norm();
+  s.leg_speed = progress->target().speed;
+  s.port_xtd = progress->target().port_xtd;
+  s.starboard_xtd = progress->target().starboard_xtd;
+  route_status_pub_.publish(s);  // for displays and logs: no lockstep stage waits for it
+}
+
 void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) {
   // A goal in another frame (rviz's goal tool in its fixed frame, a chart's `utm`) is moved into map;
   // no frame at all is taken as map, as rostopic pub writes it.
@@ -310,8 +425,10 @@ void PlannerNode::goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg) 
            params_.frame_id.c_str());
   params_.goal = {g.position.x, g.position.y};
   params_.has_goal = true;
+  route_.clear();  // a goal replaces the route
   if (follower_)
     follower_->setGoal(params_.goal);  // replans towards the new goal
+  publishRoute();
 }
 
 std::vector<asv::PlannerTarget> PlannerNode::targetsNow() const {
@@ -574,6 +691,7 @@ void PlannerNode::timerCallback() {
     if (r.has_setpoint)
       publishSetpoint(r.course, r.speed);
   }
+  publishRouteStatus();
   updater_.update();
 }
 
@@ -634,6 +752,11 @@ void PlannerNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
   stat.add("last compute time [s]", last_compute_);
   stat.add("max compute time [s]", max_compute_);
   stat.add("last replan reason", last_reason_);
+  if (const auto& progress = follower_->routeProgress(); progress && own_) {
+    stat.add("route waypoint",
+             std::to_string(progress->active()) + " of " + std::to_string(progress->route().size()));
+    stat.add("cross-track error [m]", progress->crossTrackError(own_->position));
+  }
   const asv::Plan& plan = follower_->plan();
   if (follower_->havePlan() && plan.status == asv::PlanStatus::Fallback)
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "fallback: " + plan.message);

@@ -3,11 +3,13 @@
 // Subscribes: odom (nav_msgs/Odometry, own ship), risk (asv_msgs/RiskAssessment), targets
 //   (asv_msgs/TargetArray), goal (geometry_msgs/PoseStamped, optional: replaces the configured goal),
 //   alarms (asv_msgs/Alarm: the upstream nodes' alarms), aids_to_navigation
-//   (asv_msgs/AidToNavigationArray from ais_node, when use_aids: hazards the plans keep clear of)
+//   (asv_msgs/AidToNavigationArray from ais_node, when use_aids: hazards the plans keep clear of), route
+//   (nav_msgs/Path: a voyage plan, replaces the scenario's route or the goal)
 // Publishes: plan (asv_msgs/Plan), path (nav_msgs/Path), cmd (asv_msgs/CourseSpeedSetpoint),
 //   plan_markers (visualization_msgs/MarkerArray), domains (MarkerArray: the planner's domain round each
-//   target of its problem), alarms (asv_msgs/Alarm, latched: its inputs lost and
-//   the degraded action), /diagnostics
+//   target of its problem), route_markers (MarkerArray, latched: the route in force and its corridors),
+//   route_status (asv_msgs/RouteStatus: active waypoint, cross-track error), alarms (asv_msgs/Alarm, latched:
+//   its inputs lost and the degraded action), /diagnostics
 // Parameters: config/planner_node.yaml; the planner's own under ~<planner>/ (each algorithm's keys are its
 //   config struct's, asv_core/planning/<planner>/, defaults in its constructor; config/dssa.yaml shows
 //   DSSA's).
@@ -28,6 +30,7 @@
 #include <asv_msgs/AidToNavigationArray.h>
 #include <asv_msgs/Alarm.h>
 #include <asv_msgs/RiskAssessment.h>
+#include <asv_msgs/RouteStatus.h>
 #include <asv_msgs/TargetArray.h>
 #include <asv_ros/alarm.h>
 #include <asv_ros/frames.h>
@@ -36,6 +39,7 @@
 #include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 
 #include "asv_planning/PlannerConfig.h"
@@ -54,6 +58,12 @@ private:
   void riskCallback(const asv_msgs::RiskAssessment::ConstPtr& msg);
   void targetsCallback(const asv_msgs::TargetArray::ConstPtr& msg);
   void goalCallback(const geometry_msgs::PoseStamped::ConstPtr& msg);
+  // A voyage plan (nav_msgs/Path, any frame tf2 connects to map): the ship sails it from the leg
+  // nearest to her; the last pose is the goal. Speeds and corridors are not in a Path: the cruise speed.
+  void routeCallback(const nav_msgs::Path::ConstPtr& msg);
+  void setRoute(const asv::Route& route, const std::string& from);
+  void publishRoute();        // route_markers: the route, its waypoints and corridors (latched)
+  void publishRouteStatus();  // route_status: active waypoint and cross-track error
   // Aids to navigation become point hazards of the plans (use_aids, aid_clearance).
   void aidsCallback(const asv_msgs::AidToNavigationArray::ConstPtr& msg);
   // The scenario's obstacles and the aids' hazards, as the plan follower gets them.
@@ -94,8 +104,10 @@ private:
   pluginlib::UniquePtr<asv::PlannerAlgorithm> plugin_;
   std::vector<asv::StaticObstacle> obstacles_;      // the scenario's (land, structures)
   std::vector<asv::StaticObstacle> aid_obstacles_;  // one per aid to navigation
-  ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_, aids_sub_;
-  ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_, domains_pub_;
+  ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_, aids_sub_, route_sub_;
+  ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_, domains_pub_, route_markers_pub_,
+      route_status_pub_;
+  asv::Route route_;                               // the voyage plan in force (empty: none), for its markers
   asv_ros::FrameLookup frames_{params_.frame_id};  // odometry and goals in any frame tf2 connects to map
   diagnostic_updater::Updater updater_;
   asv_ros::Lockstep lockstep_{nh_, asv_ros::kPlanning};
