@@ -37,7 +37,7 @@ help:
 	@echo "  make install install every package into install/ (source install/setup.bash)"
 	@echo "  make bench   run the Google Benchmark executables, JSON into out/bench/"
 	@echo "  make eval    every scenario with every planner through asv_batch (out/eval/)"
-	@echo "  make benchmark  generated situations (tuning and test seed ranges) x every planner: out/benchmark/"
+	@echo "  make benchmark  generated situations, then real AIS traffic (tuning and test ranges) x every planner: out/benchmark/"
 	@echo "  make eval-ros  the same pairs through the ROS pipeline in lockstep against asv_batch (out/eval_ros/)"
 	@echo "  make papers  the four papers' experiments in paper mode against their numbers: docs/results/*.md,"
 	@echo "               out/papers/summary.json (PAPERS_ARGS=\"--only dssa\" for one paper)"
@@ -126,10 +126,14 @@ eval: build
 
 # Monte-Carlo benchmark (scripts/benchmark.py, docs/evaluation.md): asv_scenario_gen situations of a tuning
 # and a test seed range x every planner through asv_batch under GNU parallel; out/benchmark/report.md,
-# summary.json and plots. BENCHMARK_ARGS="--situations 90 --planners ga" narrows it.
+# summary.json and plots. BENCHMARK_ARGS="--situations 90 --planners ga" narrows it. Then real traffic
+# (scripts/real_traffic.py): the own ship in the place of logged vessels of $ASV_AIS_LOG (default the
+# shared New York hour; skipped, and said so, without it), tuning and test ranges by time, against the
+# masters: out/benchmark/real/report.md. REAL_TRAFFIC_ARGS="--per-start 1 --planners aco" narrows it.
 BENCHMARK_ARGS ?=
+REAL_TRAFFIC_ARGS ?=
 benchmark: build
-	@$(DEVEL) && scripts/benchmark.py $(BENCHMARK_ARGS)
+	@$(DEVEL) && scripts/benchmark.py $(BENCHMARK_ARGS) && scripts/real_traffic.py $(REAL_TRAFFIC_ARGS)
 
 # Batch and ROS agree (scripts/eval_ros.py): every scenario/planner pair once through scenario.launch
 # lockstep:=true and once through asv_batch; out/eval_ros/report.md, exit 1 on a disagreement.

@@ -54,6 +54,7 @@ checks() {
   scripts/catkin_lint_check.py "$results/catkin_lint.xml" || true
   (source devel/setup.bash && scripts/readme_check.py "$results/readme_check.xml") || true
   scripts/plot_check.py "$results/plot_check.xml" || true
+  scripts/real_traffic_check.py "$results/real_traffic_check.xml" || true
   (source devel/setup.bash && scripts/papers_check.py "$results/papers_check.xml") || true
   JOBS=$JOBS scripts/install_check.py "$results/install_check.xml" || true
 }
