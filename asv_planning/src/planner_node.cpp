@@ -194,6 +194,7 @@ void PlannerNode::start() {
   domains_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("domains", 2);
   route_markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("route_markers", 1, true);
   route_status_pub_ = nh_.advertise<asv_msgs::RouteStatus>("route_status", 5);
+  active_route_pub_ = nh_.advertise<nav_msgs::Path>("active_route", 1, true);
   publishRoute();
   lockstep_.every(1.0 / params_.setpoint_rate, [this] { timerCallback(); });
   if (!lockstep_.enabled())  // a lost input is acted on between set-points too
@@ -341,6 +342,18 @@ void PlannerNode::setRoute(const asv::Route& route, const std::string& from) {
 }
 
 void PlannerNode::publishRoute() {
+  nav_msgs::Path path;
+  path.header.frame_id = params_.frame_id;
+  path.header.stamp = ros::Time::now();
+  for (const asv::RouteWaypoint& w : route_) {
+    geometry_msgs::PoseStamped ps;
+    ps.header = path.header;
+    ps.pose.position.x = w.position.x();
+    ps.pose.position.y = w.position.y();
+    ps.pose.orientation.w = 1.0;
+    path.poses.push_back(ps);
+  }
+  active_route_pub_.publish(path);
   visualization_msgs::MarkerArray arr;
   visualization_msgs::Marker line, corridor, points;
   line.header.frame_id = params_.frame_id;

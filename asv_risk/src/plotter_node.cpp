@@ -52,6 +52,15 @@ PlotterNode::PlotterNode(ros::NodeHandle nh, ros::NodeHandle pnh) : nh_(nh), pnh
                                                         for (const auto& t : m->targets)
                                                           cpa_[t.target_id] = {t.dcpa, t.tcpa};
                                                       });
+  route_sub_ = nh_.subscribe<nav_msgs::Path>("active_route", 1, [this](const nav_msgs::Path::ConstPtr& m) {
+    if (!inMap(m->header.frame_id, "route"))
+      return;
+    std::vector<Eigen::Vector2d> route;
+    for (const auto& p : m->poses)
+      if (std::isfinite(p.pose.position.x) && std::isfinite(p.pose.position.y))
+        route.emplace_back(p.pose.position.x, p.pose.position.y);
+    plotter_->setRoute(route);
+  });
   if (config_.forward_ais)
     nmea_sub_ = nh_.subscribe("nmea_in", 1000, &PlotterNode::forward, this);
   timer_ = nh_.createTimer(ros::Duration(1.0 / config_.rate), [this](const ros::TimerEvent&) { tick(); });

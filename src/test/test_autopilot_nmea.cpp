@@ -65,6 +65,22 @@ TEST(AutopilotSentences, ApbXteRmbHscAsLaidOut) {
   EXPECT_EQ(ap::encodeApb(s), "$ECAPB,V,V,0.054,R,N,V,V,90.0,T,ASV1,93.1,T,93.1,T,N*32");
 }
 
+// A route for a chart plotter: WPL per waypoint, RTE naming them in order, split where a sentence would
+// pass 82 characters (checksums: Python's XOR over the body). 40.7 N 74.0125 W: 4042.0000,N 07400.7500,W.
+TEST(AutopilotSentences, WplAndRteForAPlotter) {
+  EXPECT_EQ(ap::encodeWpl(40.7, -74.0125, "WP001"), "$ECWPL,4042.0000,N,07400.7500,W,WP001*7D");
+  EXPECT_EQ(ap::encodeRte("ASV", {"WP001", "WP002", "WP003"}),
+            std::vector<std::string>{"$ECRTE,1,1,c,ASV,WP001,WP002,WP003*79"});
+  std::vector<std::string> twenty;
+  for (int k = 1; k <= 20; ++k)
+    twenty.push_back((k < 10 ? "WP00" : "WP0") + std::to_string(k));
+  // "$ECRTE,2,1,c,ASV" and ten names of 6 characters: 79 with the checksum; an eleventh would pass 80.
+  const auto rte = ap::encodeRte("ASV", twenty);
+  ASSERT_EQ(rte.size(), 2u);
+  EXPECT_EQ(rte[0], "$ECRTE,2,1,c,ASV,WP001,WP002,WP003,WP004,WP005,WP006,WP007,WP008,WP009,WP010*61");
+  EXPECT_EQ(rte[1], "$ECRTE,2,2,c,ASV,WP011,WP012,WP013,WP014,WP015,WP016,WP017,WP018,WP019,WP020*60");
+}
+
 TEST(AutopilotSentences, PositionFields) {
   EXPECT_EQ(ap::latitudeField(-33.8568), "3351.4080,S");        // 0.8568 deg = 51.408'
   EXPECT_EQ(ap::longitudeField(151.2153), "15112.9180,E");      // 0.2153 deg = 12.918'

@@ -141,6 +141,38 @@ TEST(PlotterOutput, TtmNearestFirstWithStableNumbers) {
   EXPECT_EQ(out[1].substr(0, 10), "$ECTTM,02,");
 }
 
+// The route in force goes out as WPL and RTE in the period after it is set, then every route_period
+// (10 s): two waypoints at the frame's origin and 0.01 deg north of it.
+TEST(PlotterOutput, RouteAsWplAndRteWhenSetAndEveryPeriod) {
+  PlotterConfig cfg;
+  const LocalFrame frame(40.6, -74.05);
+  PlotterOutput out(cfg, frame);
+  auto routeLines = [](const std::vector<std::string>& lines) {
+    std::vector<std::string> r;
+    for (const auto& l : lines)
+      if (l.rfind("$ECWPL", 0) == 0 || l.rfind("$ECRTE", 0) == 0)
+        r.push_back(l);
+    return r;
+  };
+  EXPECT_TRUE(routeLines(out.sentences(ownAtOrigin(), {}, kEpoch)).empty());  // no route yet
+  out.setRoute({frame.toLocal(GeoPoint{40.6, -74.05}), frame.toLocal(GeoPoint{40.61, -74.05})});
+  const auto first = routeLines(out.sentences(ownAtOrigin(), {}, kEpoch + 1.0));
+  ASSERT_EQ(first.size(), 3u);
+  std::vector<std::string> keep;
+  EXPECT_EQ(framed(first[0], keep).field(1), "4036.0000");  // 40.6 N
+  EXPECT_EQ(framed(first[1], keep).field(1), "4036.6000");  // 40.61 N
+  EXPECT_EQ(framed(first[1], keep).field(5), "WP002");
+  const nmea::Sentence rte = framed(first[2], keep);
+  EXPECT_EQ(rte.field_count, 7u);  // RTE,1,1,c,ASV,WP001,WP002
+  EXPECT_EQ(rte.field(6), "WP002");
+  EXPECT_TRUE(routeLines(out.sentences(ownAtOrigin(), {}, kEpoch + 5.0)).empty());
+  EXPECT_EQ(routeLines(out.sentences(ownAtOrigin(), {}, kEpoch + 11.0)).size(), 3u);
+  cfg.sentences = {"RMC"};
+  PlotterOutput quiet(cfg, frame);
+  quiet.setRoute({Eigen::Vector2d::Zero()});
+  EXPECT_TRUE(routeLines(quiet.sentences(ownAtOrigin(), {}, kEpoch)).empty());
+}
+
 TEST(PlotterOutput, ConfigRefusesWhatCannotBeSent) {
   ParamMap p;
   p.set("max_targets", 100);

@@ -8,6 +8,7 @@
 // Publishes: plan (asv_msgs/Plan), path (nav_msgs/Path), cmd (asv_msgs/CourseSpeedSetpoint),
 //   plan_markers (visualization_msgs/MarkerArray), domains (MarkerArray: the planner's domain round each
 //   target of its problem), route_markers (MarkerArray, latched: the route in force and its corridors),
+//   active_route (nav_msgs/Path, latched: the route in force, for plotter_node; empty: none),
 //   route_status (asv_msgs/RouteStatus: active waypoint, cross-track error), alarms (asv_msgs/Alarm, latched:
 //   its inputs lost and the degraded action), /diagnostics
 // Parameters: config/planner_node.yaml; the planner's own under ~<planner>/ (each algorithm's keys are its
@@ -106,7 +107,7 @@ private:
   std::vector<asv::StaticObstacle> aid_obstacles_;  // one per aid to navigation
   ros::Subscriber odom_sub_, risk_sub_, targets_sub_, goal_sub_, alarms_sub_, aids_sub_, route_sub_;
   ros::Publisher plan_pub_, path_pub_, cmd_pub_, markers_pub_, domains_pub_, route_markers_pub_,
-      route_status_pub_;
+      route_status_pub_, active_route_pub_;
   asv::Route route_;                               // the voyage plan in force (empty: none), for its markers
   asv_ros::FrameLookup frames_{params_.frame_id};  // odometry and goals in any frame tf2 connects to map
   diagnostic_updater::Updater updater_;

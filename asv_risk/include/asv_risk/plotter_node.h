@@ -1,10 +1,11 @@
 // plotter_node: the situation as NMEA 0183 for a chart plotter (OpenCPN or any ECS): the own ship
-// (RMC, HDT, her VDO), each tracked target (TTM with the risk picture's CPA and TCPA) and, forwarded,
-// the traffic's own AIS sentences. asv::PlotterOutput has the rules.
+// (RMC, HDT, her VDO), each tracked target (TTM with the risk picture's CPA and TCPA), the voyage plan
+// in force (WPL, RTE) and, forwarded, the traffic's own AIS sentences. asv::PlotterOutput has the rules.
 //
 // Subscribes: odom (nav_msgs/Odometry, the own ship in map), targets (asv_msgs/TargetArray, the
 //             tracker's), risk (asv_msgs/RiskAssessment), nmea_in (asv_msgs/NmeaSentence, forwarded
-//             AIVDM/AIVDO when forward_ais)
+//             AIVDM/AIVDO when forward_ais), active_route (nav_msgs/Path in map: planner_node's route in
+//             force)
 // Publishes:  NMEA 0183 over UDP or serial (output/*), /diagnostics
 // Parameters: see config/plotter_node.yaml (every key documented there).
 #pragma once
@@ -23,6 +24,7 @@
 #include <asv_ros/nmea_output.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 
 namespace asv_risk {
@@ -49,7 +51,7 @@ private:
   asv_msgs::TargetArray::ConstPtr targets_;
   std::map<std::string, std::pair<double, double>> cpa_;  // target id -> (DCPA, TCPA) of the last /risk
   ros::Time odom_time_, targets_time_;
-  ros::Subscriber odom_sub_, targets_sub_, risk_sub_, nmea_sub_;
+  ros::Subscriber odom_sub_, targets_sub_, risk_sub_, nmea_sub_, route_sub_;
   ros::Timer timer_, diag_timer_;
   diagnostic_updater::Updater updater_;
   std::uint64_t periods_ = 0, void_periods_ = 0, forwarded_ = 0;

@@ -117,6 +117,37 @@ std::string encodeHsc(double heading_true, std::optional<double> variation, cons
   return nmea::withChecksum('$', talker + "HSC," + degrees(heading_true) + ",T," + magnetic + ",M");
 }
 
+std::string encodeWpl(double lat_deg, double lon_deg, const std::string& name, const std::string& talker) {
+  return nmea::withChecksum(
+      '$', talker + "WPL," + latitudeField(lat_deg) + "," + longitudeField(lon_deg) + "," + name);
+}
+
+std::vector<std::string> encodeRte(const std::string& route_name, const std::vector<std::string>& waypoints,
+                                   const std::string& talker) {
+  // NMEA 0183: at most 82 characters from '$' to the line end: 79 before "*hh", less the fields ahead
+  // of the names ("RTE,nn,nn,c,<name>"); two digits leave room for 99 sentences.
+  const std::size_t room = 79 - 1 - (talker.size() + std::string("RTE,99,99,c,").size() + route_name.size());
+  std::vector<std::vector<std::string>> parts(1);
+  std::size_t used = 0;
+  for (const std::string& w : waypoints) {
+    if (!parts.back().empty() && used + 1 + w.size() > room) {
+      parts.emplace_back();
+      used = 0;
+    }
+    parts.back().push_back(w);
+    used += 1 + w.size();
+  }
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    std::string body =
+        talker + "RTE," + std::to_string(parts.size()) + "," + std::to_string(k + 1) + ",c," + route_name;
+    for (const std::string& w : parts[k])
+      body += "," + w;
+    out.push_back(nmea::withChecksum('$', body));
+  }
+  return out;
+}
+
 std::string latitudeField(double lat_deg) {
   return angleField(lat_deg, 2, 'N', 'S');
 }

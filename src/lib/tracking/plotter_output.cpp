@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <stdexcept>
 
+#include "asv_core/codec/autopilot.h"
 #include "asv_core/codec/nmea_encode.h"
 #include "asv_core/common/units.h"
 
@@ -17,18 +19,20 @@ constexpr int kMaxTtmNumber = 99;  // TTM's target number field holds two digits
 }  // namespace
 
 void PlotterConfig::validate() const {
-  static const std::set<std::string> known{"RMC", "HDT", "VDO", "TTM"};
+  static const std::set<std::string> known{"RMC", "HDT", "VDO", "TTM", "RTE"};
   if (!(rate > 0.0 && rate <= 10.0))
     throw std::invalid_argument("rate must be in (0, 10] Hz");
   if (own_mmsi > 999999999u)
     throw std::invalid_argument("own_mmsi must have at most 9 digits");
   if (!(stale_after > 0.0))
     throw std::invalid_argument("stale_after must be > 0 s");
+  if (!(route_period > 0.0))
+    throw std::invalid_argument("route_period must be > 0 s");
   if (max_targets > static_cast<std::size_t>(kMaxTtmNumber))
     throw std::invalid_argument("max_targets must be <= 99 (TTM numbers have two digits)");
   for (const std::string& s : sentences)
     if (!known.count(s))
-      throw std::invalid_argument("sentences: unknown sentence '" + s + "' (RMC, HDT, VDO, TTM)");
+      throw std::invalid_argument("sentences: unknown sentence '" + s + "' (RMC, HDT, VDO, TTM, RTE)");
 }
 
 PlotterConfig PlotterConfig::fromParams(const ParamMap& p) {
@@ -39,6 +43,7 @@ PlotterConfig PlotterConfig::fromParams(const ParamMap& p) {
   c.sentences = p.getStringList("sentences", c.sentences);
   c.forward_ais = p.getBool("forward_ais", c.forward_ais);
   c.stale_after = p.getDouble("stale_after", c.stale_after);
+  c.route_period = p.getDouble("route_period", c.route_period);
   c.validate();
   return c;
 }
@@ -68,6 +73,30 @@ std::vector<std::string> PlotterOutput::sentences(const std::optional<PlotterOwn
   if (cfg_.sends("TTM"))
     for (std::string& s : ttm(*own, targets, unix_time))
       out.push_back(std::move(s));
+  if (cfg_.sends("RTE") && !route_.empty() && unix_time - route_sent_ >= cfg_.route_period) {
+    for (std::string& s : routeSentences())
+      out.push_back(std::move(s));
+    route_sent_ = unix_time;
+  }
+  return out;
+}
+
+void PlotterOutput::setRoute(const std::vector<Eigen::Vector2d>& route) {
+  route_ = route;
+  route_sent_ = -1e300;  // due in the next period
+}
+
+std::vector<std::string> PlotterOutput::routeSentences() const {
+  std::vector<std::string> out, names;
+  for (std::size_t k = 0; k < route_.size(); ++k) {
+    char name[16];
+    std::snprintf(name, sizeof name, "WP%03zu", k + 1);
+    names.push_back(name);
+    const GeoPoint g = frame_.toGeodetic(route_[k]);
+    out.push_back(autopilot::encodeWpl(g.lat_deg, g.lon_deg, name));
+  }
+  for (std::string& s : autopilot::encodeRte("ASV", names))
+    out.push_back(std::move(s));
   return out;
 }
 

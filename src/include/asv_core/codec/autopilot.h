@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -65,6 +66,14 @@ std::string encodeRmb(const Steering& s, const std::string& talker = "EC");
 std::string encodeXte(const Steering& s, const std::string& talker = "EC");
 // "$<talker>HSC,...": heading true, and magnetic when the variation (rad, east positive) is known.
 std::string encodeHsc(double heading_true, std::optional<double> variation, const std::string& talker = "EC");
+
+// "$<talker>WPL,...": a waypoint's position and name (a chart plotter's waypoint list).
+std::string encodeWpl(double lat_deg, double lon_deg, const std::string& name,
+                      const std::string& talker = "EC");
+// "$<talker>RTE,...": a route's waypoint names in order, as many sentences as fit 82 characters each
+// (the first field the count, the second each one's number; c: the complete route).
+std::vector<std::string> encodeRte(const std::string& route_name, const std::vector<std::string>& waypoints,
+                                   const std::string& talker = "EC");
 
 // NMEA position fields: "ddmm.mmmm,N" and "dddmm.mmmm,E".
 std::string latitudeField(double lat_deg);
