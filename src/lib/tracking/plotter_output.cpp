@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <set>
 #include <stdexcept>
 
 #include "asv_core/codec/autopilot.h"
 #include "asv_core/codec/nmea_encode.h"
+#include "asv_core/common/format.h"
 #include "asv_core/common/units.h"
 
 namespace asv {
@@ -89,11 +89,9 @@ void PlotterOutput::setRoute(const std::vector<Eigen::Vector2d>& route) {
 std::vector<std::string> PlotterOutput::routeSentences() const {
   std::vector<std::string> out, names;
   for (std::size_t k = 0; k < route_.size(); ++k) {
-    char name[16];
-    std::snprintf(name, sizeof name, "WP%03zu", k + 1);
-    names.push_back(name);
+    names.push_back(strFormat("WP%03zu", k + 1));
     const GeoPoint g = frame_.toGeodetic(route_[k]);
-    out.push_back(autopilot::encodeWpl(g.lat_deg, g.lon_deg, name));
+    out.push_back(autopilot::encodeWpl(g.lat_deg, g.lon_deg, names.back()));
   }
   for (std::string& s : autopilot::encodeRte("ASV", names))
     out.push_back(std::move(s));
