@@ -34,9 +34,10 @@ declare -A targets=(
                src/lib/codec/ais_json_type6.cpp src/lib/codec/ais_json_type8.cpp src/lib/codec/arpa.cpp"
   [fuzz_arpa]="src/fuzz/fuzz_arpa.cpp src/lib/codec/nmea.cpp src/lib/codec/arpa.cpp src/lib/codec/gnss.cpp src/lib/common/param_map.cpp"
   [fuzz_scenario]="src/fuzz/fuzz_scenario.cpp src/lib/world/scenario.cpp src/lib/world/obstacles.cpp
+                   src/lib/world/route.cpp src/lib/world/route_file.cpp
                    src/lib/common/obstacle_index.cpp src/lib/common/geodesy.cpp
                    src/lib/common/param_map.cpp src/lib/common/geometry.cpp src/lib/risk/domain.cpp
-                   -lyaml-cpp -lGeographicLib"
+                   -lyaml-cpp -lGeographicLib -ltinyxml2"
 )
 # Seed corpus of each target (copied at run time, so nothing is duplicated in the repository).
 seed() {  # name corpus_dir

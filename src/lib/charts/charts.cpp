@@ -368,6 +368,7 @@ std::vector<Eigen::Vector2d> simplifyPolyline(const std::vector<Eigen::Vector2d>
   if (!out || out->getNumPoints() < 2)
     return {line.front(), line.back()};
   std::vector<Eigen::Vector2d> kept;
+  kept.reserve(static_cast<std::size_t>(out->getNumPoints()));
   for (int i = 0; i < out->getNumPoints(); ++i)
     kept.emplace_back(out->getX(i), out->getY(i));
   return kept;

@@ -105,7 +105,8 @@ std::vector<Eigen::Vector2d> RouteProgress::waypointsBeforeGoal() const {
 }
 
 Eigen::Vector2d RouteProgress::lineOfSight(const Eigen::Vector2d& p, double lookahead) const {
-  const Eigen::Vector2d a = legStart(), b = route_[active_].position;
+  const Eigen::Vector2d a = legStart();
+  Eigen::Vector2d b = route_[active_].position;
   const double len = (b - a).norm();
   if (!(len > 0.0))
     return b;
