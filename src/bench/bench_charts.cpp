@@ -31,8 +31,7 @@ const asv::PlanningProblem& newYork() {
       pt.risk = asv::RiskLevel::Collision;
       p.targets.push_back(pt);
     }
-    const double required =
-        asv::landRequirement(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance);
+    const double required = asv::landRequirement(p);
     if (auto route = asv::landRoute(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance, required))
       p.route = *route;
     return p;
@@ -86,7 +85,7 @@ BENCHMARK(BM_PlanNewYork_dssa_plus)
 // The land route itself (visibility graph over the coast's convex corners, A*), made once per plan.
 void BM_LandRouteNewYork(benchmark::State& state) {
   const asv::PlanningProblem& p = newYork();
-  const double required = asv::landRequirement(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance);
+  const double required = asv::landRequirement(p);
   for (auto _ : state)
     benchmark::DoNotOptimize(
         asv::landRoute(p.own.position, p.goal, p.obstacles, p.min_obstacle_clearance, required));

@@ -132,6 +132,11 @@ double landRequirement(const Eigen::Vector2d& position, const Eigen::Vector2d& g
                    0.5 * trackObstacleDistance({goal}, obstacles)});
 }
 
+double landRequirement(const PlanningProblem& problem) {
+  return landRequirement(problem.own.position, nextWayPoint(problem), problem.obstacles,
+                         problem.min_obstacle_clearance);
+}
+
 std::optional<std::vector<Eigen::Vector2d>> landRoute(const Eigen::Vector2d& from, const Eigen::Vector2d& to,
                                                       const std::vector<StaticObstacle>& obstacles,
                                                       double clearance, double required) {

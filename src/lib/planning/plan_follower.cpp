@@ -290,8 +290,7 @@ Plan planInMode(const std::function<Plan(const PlanningProblem&)>& make, const P
 Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& make, PlanningProblem problem,
                           int retries) {
   RuleCheck check{problem};
-  check.land_required =
-      landRequirement(problem.own.position, problem.goal, problem.obstacles, problem.min_obstacle_clearance);
+  check.land_required = landRequirement(problem);
   for (const auto& t : problem.targets) {
     check.give_way |= t.encounter == Encounter::HeadOn || t.encounter == Encounter::CrossingGiveWay;
     check.port_side |= t.encounter == Encounter::CrossingStandOn;

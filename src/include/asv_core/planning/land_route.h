@@ -27,6 +27,9 @@ double trackObstacleDistance(const std::vector<Eigen::Vector2d>& track,
 // (a berth), so that she may still move and arrive. 0: no land.
 double landRequirement(const Eigen::Vector2d& position, const Eigen::Vector2d& goal,
                        const std::vector<StaticObstacle>& obstacles, double clearance);
+// The same for a planning problem, toward the point it steers for next (nextWayPoint): the planners
+// and the follower judge land against the same point.
+double landRequirement(const PlanningProblem& problem);
 
 // The points to pass between `from` and `to` (neither included): none when the straight leg keeps
 // `required` from every obstacle; otherwise the shortest path over the obstacles' vertices pushed out

@@ -476,8 +476,7 @@ Plan DssaPlanner::plan(const PlanningProblem& problem) {
   DssaAgent agent(0, cfg, sp);
   // Land (not in the paper): steer for the route's next point round it, never onto it.
   const Eigen::Vector2d next = nextWayPoint(problem);
-  agent.setLand(&problem.obstacles, landRequirement(problem.own.position, problem.goal, problem.obstacles,
-                                                    problem.min_obstacle_clearance));
+  agent.setLand(&problem.obstacles, landRequirement(problem));
   agent.setOwn(problem.own, next, problem.time);
   int id = 1;
   for (const auto& t : problem.targets) {

@@ -178,8 +178,7 @@ GaFitness::GaFitness(const PlanningProblem& problem, const GaConfig& cfg) : cfg_
   reference_course_ = (next - own_.position).norm() > 1e-6 ? trueBearing(own_.position, next) : own_.course;
   next_ = next;
   land_ = &problem.obstacles;
-  land_required_ =
-      landRequirement(problem.own.position, problem.goal, problem.obstacles, problem.min_obstacle_clearance);
+  land_required_ = landRequirement(problem);
   land_reach_ = std::max(problem.own.speed, 0.5) * problem.prediction_horizon;
   own_.course = own_.heading = reference_course_;
 
