@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "asv_core/common/geometry.h"
 #include "asv_core/common/units.h"
@@ -363,8 +364,8 @@ void PlanFollower::updateOwn(const ShipState& own) {
   if (!own_ && cfg_.cruise_speed <= 0.0)
     cfg_.cruise_speed = std::max(0.5, own.speed);
   own_ = own;
-  if (!route_.empty() && !progress_)
-    progress_ = RouteProgress(route_, own.position);
+  if (!pending_route_.empty() && !progress_)
+    progress_ = RouteProgress(std::exchange(pending_route_, {}), own.position);
   if (progress_ && progress_->update(own.position, std::max(own.speed, legSpeed()), cfg_.limits.turn_rate,
                                      cfg_.waypoint_acceptance))
     leg_changed_ = true;
@@ -374,10 +375,12 @@ void PlanFollower::setRoute(Route route) {
   if (route.empty())
     throw std::invalid_argument("plan follower: a route needs at least one waypoint");
   goal_ = route.back().position;
-  route_ = std::move(route);
   progress_.reset();
+  pending_route_.clear();
   if (own_)
-    progress_ = RouteProgress(route_, own_->position);
+    progress_ = RouteProgress(std::move(route), own_->position);
+  else
+    pending_route_ = std::move(route);
   have_plan_ = false;  // replan along the new route
 }
 

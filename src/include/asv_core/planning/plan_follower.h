@@ -128,7 +128,7 @@ public:
 
   void setGoal(const Eigen::Vector2d& goal) {
     goal_ = goal;
-    route_.clear();
+    pending_route_.clear();
     progress_.reset();
     have_plan_ = false;  // replan towards the new goal
   }
@@ -203,8 +203,8 @@ private:
 
   PlanFollowerConfig cfg_;
   std::optional<Eigen::Vector2d> goal_;
-  Route route_;                            // the voyage plan given, until the ship's position is known
-  std::optional<RouteProgress> progress_;  // ... and sailed from then on
+  Route pending_route_;                    // the voyage plan given, until the ship's position is known
+  std::optional<RouteProgress> progress_;  // the voyage plan sailed (it holds the route from then on)
   bool leg_changed_ = false;               // a route waypoint was passed: replan for the next leg
   std::vector<StaticObstacle> obstacles_;
   std::optional<ShipState> own_;
