@@ -326,9 +326,10 @@ void PlannerNode::routeCallback(const nav_msgs::Path::ConstPtr& msg) {
     ROS_WARN("planner_node: an empty route: ignored (send a goal to steer for one point)");
     return;
   }
-  const int leg = asv::legOnLand(route, own_ ? own_->position : route.front().position, allObstacles());
-  if (leg >= 0) {
-    ROS_ERROR("planner_node: route refused: leg %d (to waypoint %d) crosses land", leg + 1, leg);
+  const auto on_land = asv::legOnLand(route, own_ ? own_->position : route.front().position, allObstacles());
+  if (on_land) {
+    ROS_ERROR("planner_node: route refused: leg %d (to waypoint %d) crosses land '%s'", on_land->leg + 1,
+              on_land->leg, on_land->land.c_str());
     return;
   }
   setRoute(route, "topic " + route_sub_.getTopic());

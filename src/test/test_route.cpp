@@ -120,10 +120,14 @@ TEST(Route, DeviationAndCorridorPerLeg) {
 TEST(Route, LegOnLandNamesTheFirstLegThatCrosses) {
   const StaticObstacle islet{"islet", {{400, 900}, {600, 900}, {600, 1100}, {400, 1100}}, nullptr};
   const Route r{wp(0, 1000), wp(1000, 1000), wp(1000, 2000)};
-  EXPECT_EQ(legOnLand(r, {0, 0}, {islet}), 1);
-  EXPECT_EQ(legOnLand(r, {0, 0}, {}), -1);
-  // 150 m clearance: leg 0 (x = 0) passes the islet at 400 m, clear.
-  EXPECT_EQ(legOnLand({wp(0, 1000)}, {0, 0}, {islet}, 150.0), -1);
+  const auto crossing = legOnLand(r, {0, 0}, {islet});
+  ASSERT_TRUE(crossing);
+  EXPECT_EQ(crossing->leg, 1);
+  EXPECT_EQ(crossing->land, "islet");
+  EXPECT_FALSE(legOnLand(r, {0, 0}, {}));
+  // 150 m clearance: leg 0 (x = 0) passes the islet at 400 m, clear; at 450 m it does not.
+  EXPECT_FALSE(legOnLand({wp(0, 1000)}, {0, 0}, {islet}, 150.0));
+  EXPECT_EQ(legOnLand({wp(0, 1000)}, {0, 0}, {islet}, 450.0)->leg, 0);
 }
 
 TEST(Route, ScenarioRouteAndHumanKeys) {

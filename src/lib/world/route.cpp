@@ -30,16 +30,16 @@ double wheelOverDistance(double turn, double speed, double turn_rate) {
   return radius * std::tan(half);
 }
 
-int legOnLand(const Route& route, const Eigen::Vector2d& start, const std::vector<StaticObstacle>& obstacles,
-              double clearance) {
+std::optional<LegOnLand> legOnLand(const Route& route, const Eigen::Vector2d& start,
+                                   const std::vector<StaticObstacle>& obstacles, double clearance) {
   Eigen::Vector2d from = start;
   for (std::size_t k = 0; k < route.size(); ++k) {
     for (const StaticObstacle& o : obstacles)
       if (obstacleDistance(o, from, route[k].position) < std::max(clearance, 1e-9))
-        return static_cast<int>(k);
+        return LegOnLand{static_cast<int>(k), o.name};
     from = route[k].position;
   }
-  return -1;
+  return std::nullopt;
 }
 
 RouteDeviation routeDeviation(const Route& route, const Eigen::Vector2d& start, const Eigen::Vector2d& p) {

@@ -693,14 +693,11 @@ const char* toString(SensorFault::Type t) {
 
 void checkRouteOffLand(const Scenario& s) {
   const Route& route = s.own.route;
-  const int leg = legOnLand(route, s.own.position, s.obstacles);
-  if (leg < 0)
+  const auto on_land = legOnLand(route, s.own.position, s.obstacles);
+  if (!on_land)
     return;
-  std::string land;
-  const Eigen::Vector2d from = leg == 0 ? s.own.position : route[leg - 1].position;
-  for (const auto& o : s.obstacles)
-    if (land.empty() && obstacleDistance(o, from, route[leg].position) <= 0.0)
-      land = o.name;
+  const int leg = on_land->leg;
+  const std::string& land = on_land->land;
   const auto line = static_cast<size_t>(leg) < s.own.route_lines.size() ? s.own.route_lines[leg] : 0;
   const std::string& file = s.own.route_source.empty() ? s.source : s.own.route_source;
   throw ScenarioError(file + (line > 0 ? ":" + std::to_string(line) : "") + ": 'own_ship.route[" +

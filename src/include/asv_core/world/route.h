@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,9 +34,14 @@ double alongTrackToGo(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const 
 double wheelOverDistance(double turn, double speed, double turn_rate);
 
 // The first leg of the route (sailed from `start`) that comes closer than `clearance` to an obstacle,
-// or -1: leg k runs from waypoint k-1 (from `start` for k = 0) to waypoint k.
-int legOnLand(const Route& route, const Eigen::Vector2d& start, const std::vector<StaticObstacle>& obstacles,
-              double clearance = 0.0);
+// and that obstacle's name; nullopt when every leg is clear. Leg k runs from waypoint k-1 (from `start`
+// for k = 0) to waypoint k.
+struct LegOnLand {
+  int leg = 0;
+  std::string land;  // the obstacle's name (may be empty)
+};
+std::optional<LegOnLand> legOnLand(const Route& route, const Eigen::Vector2d& start,
+                                   const std::vector<StaticObstacle>& obstacles, double clearance = 0.0);
 
 // How far a point is from the route, and whether it lies outside the leg's corridor: the leg nearest to
 // p (the first of equals), its signed cross-track error and whether that exceeds the leg's limit on
