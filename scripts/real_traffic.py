@@ -50,21 +50,24 @@ def iso(t):
 
 
 def read_log(path):
-    """MMSI -> time-sorted [(t, lat, lon, sog)]; rows that do not read are skipped (the scenario tool
-    counts them)."""
-    tracks = {}
+    """(MMSI -> time-sorted [(t, lat, lon, sog)], rows rejected): a row that does not read, or whose
+    position or speed is out of range (SOG 102.3 kn is AIS's "not available"), is counted and left out."""
+    tracks, rejected = {}, 0
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
             try:
                 t, lat, lon = utc(row["BaseDateTime"]), float(row["LAT"]), float(row["LON"])
                 sog, mmsi = float(row["SOG"]), int(row["MMSI"])
-            except (KeyError, ValueError):
+            except (KeyError, ValueError, TypeError):
+                rejected += 1
                 continue
             if abs(lat) <= 90 and abs(lon) <= 180 and sog < 102.2:
                 tracks.setdefault(mmsi, []).append((t, lat, lon, sog))
+            else:
+                rejected += 1
     for tr in tracks.values():
         tr.sort()
-    return tracks
+    return tracks, rejected
 
 
 def position(track, times, t):
@@ -275,7 +278,11 @@ def main():
         shutil.rmtree(out, ignore_errors=True)
         os.makedirs(out)
         print("real_traffic: reading %s..." % a.csv, flush=True)
-        picks = windows(read_log(a.csv), a.duration, a.step, a.per_start)
+        tracks, rejected = read_log(a.csv)
+        if rejected:
+            print("real_traffic: %d rows rejected (unreadable, or position or speed out of range)" % rejected,
+                  flush=True)
+        picks = windows(tracks, a.duration, a.step, a.per_start)
         made, refused = make_scenarios(a.csv, out, picks, a.duration)
         print("real_traffic: %d windows picked, %d made, %d refused (refused.txt)" % (
             len(picks), len(made), len(refused)), flush=True)

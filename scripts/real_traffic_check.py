@@ -43,8 +43,12 @@ def check_picks(finding):
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "log.csv")
         with open(path, "w") as f:
-            f.write(HEADER + "".join(lines))
-        tracks = rt.read_log(path)
+            # Two rows that must be counted, not read: a broken latitude and SOG 102.3 ("not available").
+            f.write(HEADER + "".join(lines) + "2020-06-30T00:01:00,-74.0,north,777,5.0,0.0\n" +
+                    "2020-06-30T00:01:00,-74.0,40.6,777,102.3,0.0\n")
+        tracks, rejected = rt.read_log(path)
+    if rejected != 2 or 777 in tracks:
+        finding("read_log rejected %d rows (expected the 2 bad ones) and kept 777: %s" % (rejected, 777 in tracks))
     start = rt.utc("2020-06-30T00:05:00")
     picks = rt.pick(tracks, start, 600.0, 3)
     if picks != [111, 222]:
