@@ -191,6 +191,27 @@ TEST(AsvBatch, EveryPlannerGoesRoundAnIslandAndNoneRunsAground) {
   }
 }
 
+// Rule 9: in narrow_channel.yaml a coaster comes down the middle line of a 400 m channel, which the own
+// ship's route follows too, and never gives way. Keeping to the starboard side of the channel, every
+// planner passes her port to port, clear of the 50 m separation, and arrives; with the rule off
+// (narrow_fairway_width_m 0) ACO holds the middle line into a collision.
+TEST(AsvBatch, EveryPlannerKeepsToTheStarboardSideOfANarrowChannel) {
+  const std::string channel =
+      std::string(ASV_SIM_TEST_DIR) + "/../../asv_bringup/scenarios/narrow_channel.yaml";
+  for (const char* planner : {"aco", "mopso", "ga", "dssa", "dssa_plus"}) {
+    const Output o = run("--scenario " + channel + " --planner " + planner + " --seed 1 --deterministic");
+    ASSERT_EQ(o.status, 0) << planner << ": " << o.out;
+    EXPECT_FALSE(flag(o.out, "collision")) << planner << ": " << o.out;
+    EXPECT_FALSE(flag(o.out, "grounding")) << planner << ": " << o.out;
+    EXPECT_TRUE(flag(o.out, "arrived")) << planner << ": " << o.out;
+    EXPECT_GT(number(o.out, "min_separation_m"), 50.0) << planner << ": " << o.out;
+  }
+  const Output off = run("--scenario " + channel +
+                         " --planner aco --seed 1 --deterministic --follower narrow_fairway_width_m=0");
+  ASSERT_EQ(off.status, 0) << off.out;
+  EXPECT_TRUE(flag(off.out, "collision")) << off.out;
+}
+
 // Real land from a chart: the New York scenario's straight way cuts the Brooklyn shore (GSHHG full
 // through GMT, installed by scripts/setup). Without a planner the run is a grounding, and --charts
 // replaces the scenario's chart: with an island of a GeoJSON file 8,000 km away, nothing is land here.

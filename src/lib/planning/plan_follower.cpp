@@ -13,6 +13,7 @@
 #include "asv_core/planning/land_route.h"
 #include "asv_core/planning/safety_net.h"
 #include "asv_core/risk/colregs.h"
+#include "asv_core/world/fairway.h"
 
 namespace asv {
 
@@ -21,6 +22,16 @@ namespace {
 // (300 m by default): a line-of-sight lookahead of a few ship lengths, which brings her back onto the
 // leg at about 18 deg from 100 m off it. Our choice.
 constexpr double kLineOfSightLookahead = 2.0;
+// Over this last stretch of the route the line of sight comes back from the starboard lane of a narrow
+// fairway to the goal, so that the ship arrives at it (a berth need not lie on the lane). Our choice:
+// 600 m, two lookaheads.
+constexpr double kFairwayTaper = 600.0;
+// A ship more than kLaneTolerance from the starboard lane of a narrow fairway joins it at a point
+// kLaneJoinRatio times that distance ahead (at least the line-of-sight lookahead, at most
+// kLaneJoinMax): across at about 11 deg, not over the whole leg. Our choices: 25 m (a few beams), 5, 1.5 km.
+constexpr double kLaneTolerance = 25.0;
+constexpr double kLaneJoinRatio = 5.0;
+constexpr double kLaneJoinMax = 1500.0;
 }  // namespace
 
 void PlanFollowerConfig::validate() const {
@@ -40,6 +51,7 @@ void PlanFollowerConfig::validate() const {
   require(min_separation >= 0 && risk_clear_time >= 0, "min_separation and risk_clear_time must be >= 0");
   require(degraded_plan_hold >= 0, "degraded_plan_hold must be >= 0 s");
   require(min_obstacle_clearance_m >= 0, "min_obstacle_clearance_m must be >= 0 m");
+  require(narrow_fairway_width_m >= 0, "narrow_fairway_width_m must be >= 0 m");
   require(limits.max_speed > 0 && limits.min_speed >= 0 && limits.min_speed <= limits.max_speed,
           "speeds must satisfy 0 <= min_speed <= max_speed, max_speed > 0");
   require(limits.turn_rate > 0 && limits.turn_delay >= 0, "turn_rate must be > 0, turn_delay >= 0");
@@ -62,6 +74,7 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   c.replan_on_risk = p.getBool("replan_on_risk", c.replan_on_risk);
   c.risk_clear_time = p.getDouble("risk_clear_time", c.risk_clear_time);
   c.restricted_passing = p.getBool("restricted_passing", c.restricted_passing);
+  c.narrow_fairway_width_m = p.getDouble("narrow_fairway_width_m", c.narrow_fairway_width_m);
   c.degraded_plan_hold = p.getDouble("degraded_plan_hold", c.degraded_plan_hold);
   c.min_obstacle_clearance_m = p.getDouble("min_obstacle_clearance_m", c.min_obstacle_clearance_m);
   c.limits.max_speed = p.getDouble("max_speed", c.limits.max_speed);
@@ -279,6 +292,7 @@ void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once
   cfg.stand_on_policy = false;
   cfg.min_separation = 0.0;
   cfg.restricted_passing = false;
+  cfg.narrow_fairway_width_m = 0.0;
   if (plans_once)
     cfg.replan_on_risk = false;
 }
@@ -394,6 +408,52 @@ double PlanFollower::legSpeed() const {
   return progress_ && progress_->target().speed > 0.0 ? progress_->target().speed : cfg_.cruise_speed;
 }
 
+std::optional<Eigen::Vector2d> PlanFollower::starboardSide(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                                           const Eigen::Vector2d& q, const RouteWaypoint& leg,
+                                                           bool edge) const {
+  if (!(cfg_.narrow_fairway_width_m > 0.0) || !((b - a).norm() > 1.0))
+    return std::nullopt;
+  const Eigen::Vector2d along = (b - a).normalized();
+  const Fairway f =
+      fairwayAcross(q, along, obstacles_, leg.port_xtd, leg.starboard_xtd, cfg_.narrow_fairway_width_m);
+  if (!(f.width() < cfg_.narrow_fairway_width_m))
+    return std::nullopt;
+  const double clearance = cfg_.min_obstacle_clearance_m;
+  const double offset = edge ? starboardEdgeOffset(f, clearance) : starboardLaneOffset(f, clearance);
+  return q + offset * Eigen::Vector2d(along.y(), -along.x());
+}
+
+std::optional<Eigen::Vector2d> PlanFollower::laneAhead(double lookahead, bool edge) const {
+  if (!progress_ || !own_)
+    return std::nullopt;
+  const Eigen::Vector2d q = progress_->lineOfSight(own_->position, lookahead);
+  const auto side =
+      starboardSide(progress_->legStart(), progress_->target().position, q, progress_->target(), edge);
+  if (!side)
+    return std::nullopt;
+  const double weight =
+      progress_->onLastLeg() ? std::min(1.0, (progress_->goal() - q).norm() / kFairwayTaper) : 1.0;
+  return q + weight * (*side - q);
+}
+
+std::optional<Eigen::Vector2d> PlanFollower::fairwayLineOfSight(bool edge) const {
+  return laneAhead(kLineOfSightLookahead * cfg_.waypoint_acceptance, edge);
+}
+
+std::optional<Eigen::Vector2d> PlanFollower::laneJoin() const {
+  const auto abeam = laneAhead(0.0, false);
+  if (!abeam)
+    return std::nullopt;
+  const double gap = (*abeam - own_->position).norm();
+  if (gap < kLaneTolerance)
+    return std::nullopt;
+  const double ahead =
+      std::clamp(kLaneJoinRatio * gap, kLineOfSightLookahead * cfg_.waypoint_acceptance, kLaneJoinMax);
+  if (progress_->lineOfSight(own_->position, ahead) == progress_->target().position)
+    return std::nullopt;  // the waypoint itself, in the lane, is nearer
+  return laneAhead(ahead, false);
+}
+
 std::vector<Eigen::Vector2d> PlanFollower::wayAhead() const {
   std::vector<Eigen::Vector2d> way;
   if (progress_)
@@ -411,8 +471,20 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   pr.limits = cfg_.limits;
   pr.goal = goalOrAhead();
   pr.obstacles = obstacles_;
-  if (progress_)
+  if (progress_) {
     pr.route = progress_->waypointsBeforeGoal();  // the voyage plan's next waypoints
+    // Rule 9(a): in a narrow fairway each is moved to the starboard lane across its leg.
+    const Route& r = progress_->route();
+    for (size_t k = 0; k < pr.route.size(); ++k) {
+      const size_t i = progress_->active() + k;
+      const Eigen::Vector2d a = i == progress_->active() ? progress_->legStart() : r[i - 1].position;
+      if (auto lane = starboardSide(a, r[i].position, r[i].position, r[i], false))
+        pr.route[k] = *lane;
+    }
+    // A ship out of the lane joins it ahead of her (laneJoin).
+    if (auto join = laneJoin())
+      pr.route.insert(pr.route.begin(), *join);
+  }
   // Round land: the planners steer for a way round it to the next point (none when the straight way is
   // clear). Land beyond the reach (speed x horizon) of the straight way is left to a later plan.
   const Eigen::Vector2d next = nextWayPoint(pr);
@@ -461,14 +533,18 @@ Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std
   f.speed_setpoint = cfg_.cruise_speed * cfg_.fallback_speed_factor;
   f.message = "fallback (" + why + "): hold course, slow to " + std::to_string(cfg_.fallback_speed_factor) +
               " of speed";
+  std::string extremis;
   for (const auto& t : targets)
     if (t.risk == RiskLevel::Urgent && (t.state.position - own_->position).norm() < cfg_.extremis_range) {
       // In extremis (Rule 17(b), Rule 2(b)): hard to starboard at full speed.
       f.course_setpoint = wrapTwoPi(f.course_setpoint + kPi / 2);
       f.speed_setpoint = cfg_.cruise_speed;
       f.message = "fallback (" + why + "): in extremis with " + t.state.id + ", hard starboard";
+      extremis = "; in extremis with " + t.state.id;
       break;
     }
+  if (fairwayFallback(f, why + extremis))
+    return f;
   // Holding course (or turning hard) onto land is no fallback: the ship stops instead (a grounding is
   // as bad as a collision; Rule 8(e): taking all way off is an action to avoid a collision too).
   const double required =
@@ -480,6 +556,21 @@ Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std
     f.message = "fallback (" + why + "): land ahead on the present course, stop";
   }
   return f;
+}
+
+bool PlanFollower::fairwayFallback(Plan& f, const std::string& why) const {
+  const auto edge = fairwayLineOfSight(true);
+  const Eigen::Vector2d p = own_->position;
+  if (!edge || trackObstacleDistance({p, *edge}, obstacles_) <= 0.0)
+    return false;  // not in a narrow fairway, or land between her and its edge: the open-water fallback
+  f.status = PlanStatus::Fallback;
+  f.along_fairway_edge = true;
+  f.waypoints = {PlannedWaypoint{p, 0.0, 0.0, 0.0}, PlannedWaypoint{*edge, 0.0, 0.0, 0.0}};
+  f.course_setpoint = courseOf(*edge - p);
+  f.speed_setpoint = cfg_.cruise_speed * cfg_.fallback_speed_factor;
+  f.message = "fallback (" + why + "): narrow fairway, slow to " +
+              std::to_string(cfg_.fallback_speed_factor) + " of speed at its starboard edge";
+  return true;
 }
 
 double PlanFollower::predictedClearance(const std::vector<PlannerTarget>& targets) const {
@@ -663,6 +754,10 @@ const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<Pl
     plan = fallback(targets, "no solution: " + plan.message);
     plan.compute_time = compute;
   }
+  // Rules 9 and 8(e): in a narrow fairway no plan that breaks a rule (a planner's least-violation plan,
+  // the separation net's stop) is sailed: the ship slows at the fairway's starboard edge instead.
+  if (plan.status == PlanStatus::Fallback && !plan.along_fairway_edge)
+    fairwayFallback(plan, "no plan keeps every rule: " + plan.message);
   if (plan.status == PlanStatus::Fallback)
     ++fallbacks_;
   (void)why;
@@ -685,13 +780,18 @@ bool PlanFollower::setpoint(double& course_out, double& speed_out) {
   const Eigen::Vector2d p = own_->position;
   double course = plan_.course_setpoint, speed = plan_.speed_setpoint;
   const auto& wps = plan_.waypoints;
-  if (plan_.status != PlanStatus::Fallback && wps.size() >= 2) {
+  if (plan_.along_fairway_edge) {
+    if (const auto edge = fairwayLineOfSight(true))
+      course = courseOf(*edge - p);
+  } else if (plan_.status != PlanStatus::Fallback && wps.size() >= 2) {
     while (wp_index_ < wps.size() && (wps[wp_index_].position - p).norm() < cfg_.waypoint_acceptance)
       ++wp_index_;
     if (wp_index_ < wps.size()) {
       course = courseOf(wps[wp_index_].position - p);
       if (wps[wp_index_].speed > 0.0)
         speed = wps[wp_index_].speed;
+    } else if (const auto lane = fairwayLineOfSight(false)) {
+      course = courseOf(*lane - p);
     } else if (progress_) {
       course = courseOf(progress_->lineOfSight(p, kLineOfSightLookahead * cfg_.waypoint_acceptance) - p);
     } else if (goal_) {

@@ -11,7 +11,10 @@
 //  - set-points steer for the next plan waypoint not yet within waypoint_acceptance, then for the goal;
 //  - with a voyage plan (setRoute), the planners steer for the route's next waypoint (the goal is its
 //    last), a waypoint is passed at the wheel-over point of its turn, passing one replans, and past the
-//    plan the ship rejoins the active leg by line of sight (not the straight line to the goal).
+//    plan the ship rejoins the active leg by line of sight (not the straight line to the goal);
+//  - in a narrow fairway of the route (Rule 9, fairway.h) the route's waypoints and the line of sight
+//    are moved across the leg into the fairway's starboard lane, and the fallback steers for its
+//    starboard edge at the fallback speed (Rule 8(e)) instead of holding course or stopping in it.
 // Times are the caller's clock (simulation or ROS time) in seconds.
 #pragma once
 
@@ -58,6 +61,12 @@ struct PlanFollowerConfig {
   // In restricted waters (land within 1 nm), the planners' sea-scale safety distances are capped at the
   // ship's Kijima and Nakiri (2003) domain (restrictedPassingDistance, planning.h). Off in paper mode.
   bool restricted_passing = true;
+  // [m] Rule 9: on a route, a fairway (fairway.h: across the leg, from land or the leg's corridor to land
+  // or corridor) narrower than this is a narrow channel: the ship keeps to its starboard side, and the
+  // fallback slows her at its starboard edge instead of stopping in it. 1 nm: our choice (a harbour
+  // channel, a river; a ferry crossing a river sees the river's length, not its width). 0: off (paper
+  // mode).
+  double narrow_fairway_width_m = 1852.0;
   double risk_clear_time = 60.0;  // [s] a target's risk must stay none, with its CPA past, this
                                   // long before a new rise replans again (tracking noise flickers
                                   // round thresholds; a plan that works lowers the risk)
@@ -157,7 +166,8 @@ public:
   // hold_course: the course to hold (default: the present course over ground).
   Plan fallback(const std::vector<PlannerTarget>& targets, const std::string& why,
                 std::optional<double> hold_course = std::nullopt) const;
-  // Stores a plan made at `now` (NoSolution becomes the fallback) and the risk levels it saw.
+  // Stores a plan made at `now` (NoSolution becomes the fallback; in a narrow fairway any fallback the
+  // fairway fallback) and the risk levels it saw.
   // Returns the plan in force.
   const Plan& acceptPlan(Plan plan, double now, const std::vector<PlannerTarget>& targets,
                          const std::string& why);
@@ -200,6 +210,26 @@ private:
   std::vector<Eigen::Vector2d> wayAhead() const;
   // The speed to sail now: the active leg's, else the cruise speed.
   double legSpeed() const;
+  // Rule 9(a): the point q of the leg a->b (whose waypoint `leg` carries the corridor) moved across the
+  // leg to the starboard lane of a narrow fairway, or to its starboard edge (`edge`); nullopt when the
+  // fairway at q is not narrow (or the rule is off).
+  std::optional<Eigen::Vector2d> starboardSide(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                               const Eigen::Vector2d& q, const RouteWaypoint& leg,
+                                               bool edge) const;
+  // In a narrow fairway, the point the ship steers for past a plan: the one on the active leg ahead of
+  // her (RouteProgress::lineOfSight) moved to the fairway's starboard lane (or edge), less so over the
+  // last kFairwayTaper before the goal so that she arrives. nullopt without a route or a narrow fairway.
+  std::optional<Eigen::Vector2d> fairwayLineOfSight(bool edge) const;
+  // The same for a point `lookahead` ahead of her abeam point on the active leg.
+  std::optional<Eigen::Vector2d> laneAhead(double lookahead, bool edge) const;
+  // Where a ship out of the starboard lane of a narrow fairway joins it (kLaneJoinRatio); nullopt when
+  // she is in it (or there is none), or the active waypoint comes first.
+  std::optional<Eigen::Vector2d> laneJoin() const;
+  // Rules 9 and 8(e): in a narrow fairway a fallback `f` (the follower's, in extremis too, or a
+  // planner's least-violation plan) becomes a slow passage along the starboard edge
+  // (Plan::along_fairway_edge; waypoints: the ship, the edge point), its compute time kept; false, `f`
+  // untouched, outside one or when land lies between the ship and the edge.
+  bool fairwayFallback(Plan& f, const std::string& why) const;
 
   PlanFollowerConfig cfg_;
   std::optional<Eigen::Vector2d> goal_;

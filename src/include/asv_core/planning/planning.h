@@ -150,6 +150,9 @@ struct Plan {
   // [m] the passing distance in restricted waters the plan was made under (PlanningProblem::passing_cap
   // raised to the floor, kSeparationMargin x min_separation); 0: open water, the planner's own.
   double passing_distance = 0.0;
+  // The follower's fallback in a narrow fairway (Rules 9, 8(e)): steered along the fairway's starboard
+  // edge, the point renewed as she moves, instead of held on course_setpoint.
+  bool along_fairway_edge = false;
 };
 
 // A planner's mode, key `mode`: `sea` (default), the published method with the stack's named extensions
