@@ -8,6 +8,7 @@
 #include "asv_core/common/units.h"
 #include "asv_core/sim/scenario_from_ais.h"
 #include "asv_core/sim/simulation.h"
+#include "asv_core/world/route.h"
 #include "asv_core/world/scenario_write.h"
 
 using namespace asv;
@@ -331,6 +332,19 @@ TEST(ScenarioFromAis, HerTrackBecomesTheRouteThinnedOffLand) {
   const Route kept = scenarioFromAis(bow, o).scenario.own.route;
   ASSERT_EQ(kept.size(), 2u);
   EXPECT_NEAR(kept[0].position.x(), -33.8, 0.5);
+  // A pier 100 m long and 20 m wide across her run 200 m south of the bow, which a coarse chart draws
+  // where she sailed: the route goes round it instead of being dropped, every leg off the land, and
+  // says so.
+  o.land = {StaticObstacle{"pier", {{-60, -210}, {40, -210}, {40, -190}, {-60, -190}}, nullptr}};
+  const AisScenarioResult round = scenarioFromAis(bow, o);
+  const Route& r2 = round.scenario.own.route;
+  ASSERT_GE(r2.size(), 2u);
+  EXPECT_EQ(r2.back().position, *round.scenario.own.goal);
+  EXPECT_FALSE(legOnLand(r2, round.scenario.own.position, o.land));
+  bool said = false;
+  for (const auto& w : round.warnings)
+    said |= w.find("routed round it") != std::string::npos;
+  EXPECT_TRUE(said);
 }
 
 TEST(ScenarioFromAis, NewYorkFerryFollowsHerReports) {

@@ -12,6 +12,7 @@
 #include "asv_core/common/format.h"
 #include "asv_core/common/geometry.h"
 #include "asv_core/common/units.h"
+#include "asv_core/planning/land_route.h"
 #include "asv_core/sim/simulation.h"
 
 namespace asv {
@@ -197,6 +198,10 @@ std::vector<AisLogReport> readMarineCadastreCsv(std::istream& in, AisLogStats& s
 }
 
 namespace {
+
+// [m] How close a leg routed round chart land across her track may pass it: our choice, 1 m. The
+// vessel sailed there, so the chart, not the water, is wrong; the route only has to stay off its land.
+constexpr double kRouteLandMargin = 1.0;
 
 // One vessel's reports in the scenario's frame, in time order, bad fixes removed.
 struct Vessel {
@@ -510,8 +515,10 @@ std::vector<size_t> keptIndices(const std::vector<Eigen::Vector2d>& pts,
 
 // Her track thinned (route_tolerance_m) into the own ship's route from her (moved) start to her
 // (moved) goal. Her points on chart land within its accuracy are moved off it first; a thinned leg
-// that comes closer to land than her own track there and the clearance is replaced by her track.
-// Empty, with a note, when her track itself crosses the chart's land.
+// that comes closer to land than her own track there and the clearance is replaced by her track. A
+// chart coarser than the harbour (GSHHG) can still put land across her track (a pier's end, a narrow
+// cut): such a leg is routed round that land (landRoute, kRouteLandMargin from it), with a note; when
+// there is no way round, the route is empty, with a note.
 Route herRoute(const std::vector<TrackPoint>& track, const ScenarioShip& own, const AisScenarioOptions& o,
                AisScenarioResult& res) {
   std::vector<Eigen::Vector2d> pts;
@@ -534,20 +541,30 @@ Route herRoute(const std::vector<TrackPoint>& track, const ScenarioShip& own, co
     const bool cut = landDistance(o.land, pts[idx[k - 1]], pts[idx[k]]) < std::min(hers, o.clearance_m);
     for (size_t i = cut ? idx[k - 1] + 1 : idx[k]; i <= idx[k]; ++i)
       legs.push_back(i);
-    if (hers <= 0.0) {
-      res.warnings.push_back(
-          strFormat("own route: her logged track crosses chart land %.0f s after the start: written with a "
-                    "goal only",
-                    track[idx[k]].t - o.start));
-      return {};
-    }
   }
   Route route;
+  size_t rounded = 0;
   for (size_t k = 1; k < legs.size(); ++k) {
-    RouteWaypoint w;
-    w.position = pts[legs[k]];
-    route.push_back(w);
+    const Eigen::Vector2d &from = pts[legs[k - 1]], &to = pts[legs[k]];
+    if (landDistance(o.land, from, to) <= 0.0) {
+      const auto round = landRoute(from, to, o.land, o.clearance_m, kRouteLandMargin);
+      if (!round) {
+        res.warnings.push_back(
+            strFormat("own route: her logged track crosses chart land %.0f s after the start "
+                      "with no way round it: written with a goal only",
+                      track[legs[k]].t - o.start));
+        return {};
+      }
+      ++rounded;
+      for (const Eigen::Vector2d& p : *round)
+        route.push_back(RouteWaypoint{p, 0.0, 0.0, 0.0});
+    }
+    route.push_back(RouteWaypoint{to, 0.0, 0.0, 0.0});
   }
+  if (rounded > 0)
+    res.warnings.push_back(strFormat(
+        "own route: %zu of her legs cross chart land (a chart coarser than the harbour): routed round it",
+        rounded));
   return route;
 }
 

@@ -90,7 +90,9 @@ struct AisScenarioOptions {
   // In a logged vessel's place (own_mmsi, no own_goal): her track from the start to the window's end
   // (or her last report) is the own ship's route, thinned by Douglas-Peucker to route_tolerance_m (our
   // choice, 50 m: a quarter of a narrow channel's width, and no thinned leg comes closer to land than
-  // her track did or the clearance); her mean speed over it the own ship's speed; the scenario lasts her
+  // her track did or the clearance; a leg that a chart coarser than the harbour puts across land she
+  // sailed past is routed round it, with a warning); her mean speed over it the own ship's speed; the
+  // scenario lasts her
   // time x (1 + time_margin) (our choice, 0.3: the 30 % more time a run may take and still count as
   // arriving like her); and a human record (scenario key human) holds her closest approach to the
   // targets written (every 5 s, by their logged positions), her time and her path until she came within
