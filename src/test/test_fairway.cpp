@@ -133,6 +133,15 @@ TEST(Fairway, TheFollowerKeepsToTheStarboardLaneOfANarrowChannel) {
   f.acceptPlan(spentPlan({0, -2000}), 0.0, {}, "test");
   EXPECT_NEAR(courseDeg(f), radToDeg(std::atan2(100.0, 300.0)), 0.1);
 
+  // In a channel 1.6 km wide the lane begins 400 m to starboard, but the ship keeps within 150 m of the
+  // route (kMaxLaneShift): atan2(150, 300) = 26.57 deg.
+  PlanFollower broad(cfg);
+  broad.setObstacles(channel(800));
+  broad.setRoute({wp(0, 0), wp(0, 3000)});
+  broad.updateOwn(northbound(0, -2000));
+  broad.acceptPlan(spentPlan({0, -2000}), 0.0, {}, "test");
+  EXPECT_NEAR(courseDeg(broad), radToDeg(std::atan2(150.0, 300.0)), 0.1);
+
   // In a channel 2 km wide, wider than 1 nm, and with the rule off: straight along the leg.
   PlanFollower wide(cfg);
   wide.setObstacles(channel(1000));
@@ -204,4 +213,45 @@ TEST(Fairway, TheFallbackSlowsAtTheStarboardEdgeInsteadOfStopping) {
   EXPECT_TRUE(extremis.along_fairway_edge);
   EXPECT_DOUBLE_EQ(extremis.speed_setpoint, 2.5);
   EXPECT_NE(extremis.message.find("in extremis"), std::string::npos);
+}
+
+TEST(Fairway, OvertakingWaitsForRoomInANarrowChannel) {
+  PlanFollowerConfig cfg;
+  cfg.cruise_speed = 5.0;
+  cfg.min_separation = 100.0;  // passing 110 m with the 10 % margin
+  // A tug 300 m ahead in the lane at 2 m/s, overtaken. In a channel 160 m wide the lane is 40 m east of
+  // the middle (the bank clearance a quarter of the width, 40 m); beside the tug 120 m to the west bank,
+  // 40 m to the east: under the 110 + 40 m needed. The own ship follows her at her speed.
+  PlannerTarget tug;
+  tug.state.id = "tug";
+  tug.state.position = {40, -1700};
+  tug.state.speed = 2.0;
+  tug.encounter = Encounter::Overtaking;
+  tug.role = OwnRole::GiveWay;
+  Plan overtake;
+  overtake.status = PlanStatus::Ok;
+  overtake.course_setpoint = degToRad(340.0);
+  overtake.speed_setpoint = 5.0;
+  PlanFollower narrow(cfg);
+  narrow.setObstacles(channel(80));
+  narrow.setRoute({wp(0, 0), wp(0, 3000)});
+  narrow.updateOwn(northbound(40, -2000));
+  const Plan& waiting = narrow.acceptPlan(overtake, 0.0, {tug}, "test");
+  EXPECT_EQ(waiting.status, PlanStatus::Ok);
+  EXPECT_DOUBLE_EQ(waiting.speed_setpoint, 2.0);
+  EXPECT_NE(waiting.message.find("no room to overtake tug"), std::string::npos) << waiting.message;
+  // In the 400 m channel 300 m lie beside her (lane +100 m): room enough, the plan stands.
+  PlanFollower wide(cfg);
+  wide.setObstacles(channel(200));
+  wide.setRoute({wp(0, 0), wp(0, 3000)});
+  wide.updateOwn(northbound(100, -2000));
+  tug.state.position = {100, -1700};
+  EXPECT_DOUBLE_EQ(wide.acceptPlan(overtake, 0.0, {tug}, "test").speed_setpoint, 5.0);
+  // 600 m ahead, beyond the 500 m looked at: she closes in first.
+  PlanFollower far_behind(cfg);
+  far_behind.setObstacles(channel(80));
+  far_behind.setRoute({wp(0, 0), wp(0, 3000)});
+  far_behind.updateOwn(northbound(40, -2300));
+  tug.state.position = {40, -1700};
+  EXPECT_DOUBLE_EQ(far_behind.acceptPlan(overtake, 0.0, {tug}, "test").speed_setpoint, 5.0);
 }

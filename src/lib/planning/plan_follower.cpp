@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "asv_core/common/format.h"
 #include "asv_core/common/geometry.h"
 #include "asv_core/common/units.h"
 #include "asv_core/planning/land_route.h"
@@ -32,6 +33,12 @@ constexpr double kFairwayTaper = 600.0;
 constexpr double kLaneTolerance = 25.0;
 constexpr double kLaneJoinRatio = 5.0;
 constexpr double kLaneJoinMax = 1500.0;
+// Rule 9(e): a ship the own ship overtakes within this distance ahead in a narrow fairway, with no room
+// to pass her, is followed at her speed. Our choice: 500 m, a few cables; farther off she closes in.
+constexpr double kOvertakeLook = 500.0;
+// The starboard lane or edge is at most this far across from the route (the master's voyage plan, made
+// on a better chart than ours). Our choice, 150 m.
+constexpr double kMaxLaneShift = 150.0;
 }  // namespace
 
 void PlanFollowerConfig::validate() const {
@@ -419,7 +426,9 @@ std::optional<Eigen::Vector2d> PlanFollower::starboardSide(const Eigen::Vector2d
   if (!(f.width() < cfg_.narrow_fairway_width_m))
     return std::nullopt;
   const double clearance = cfg_.min_obstacle_clearance_m;
-  const double offset = edge ? starboardEdgeOffset(f, clearance) : starboardLaneOffset(f, clearance);
+  const double offset =
+      std::clamp(edge ? starboardEdgeOffset(f, clearance) : starboardLaneOffset(f, clearance), -kMaxLaneShift,
+                 kMaxLaneShift);
   return q + offset * Eigen::Vector2d(along.y(), -along.x());
 }
 
@@ -571,6 +580,42 @@ bool PlanFollower::fairwayFallback(Plan& f, const std::string& why) const {
   f.message = "fallback (" + why + "): narrow fairway, slow to " +
               std::to_string(cfg_.fallback_speed_factor) + " of speed at its starboard edge";
   return true;
+}
+
+std::optional<Plan> PlanFollower::waitForRoom(const std::vector<PlannerTarget>& targets,
+                                              double passing) const {
+  const auto lane = fairwayLineOfSight(false);
+  if (!lane)
+    return std::nullopt;  // not in a narrow fairway
+  const Eigen::Vector2d p = own_->position, leg = progress_->target().position - progress_->legStart();
+  if (!(leg.norm() > 1.0))
+    return std::nullopt;
+  const Eigen::Vector2d along = leg.normalized();
+  if (!(passing > 0.0))
+    passing = kSeparationMargin * cfg_.min_separation;
+  for (const auto& t : targets) {
+    const double ahead = (t.state.position - p).dot(along);
+    if (t.encounter != Encounter::Overtaking || !t.state.finite() || ahead <= 0.0 || ahead > kOvertakeLook)
+      continue;
+    const Fairway f = fairwayAcross(t.state.position, along, obstacles_, progress_->target().port_xtd,
+                                    progress_->target().starboard_xtd, cfg_.narrow_fairway_width_m);
+    const double room = std::max(f.port, f.starboard);
+    const double need = passing + fairwayBankClearance(f, cfg_.min_obstacle_clearance_m);
+    if (room >= need)
+      continue;
+    Plan w;
+    w.status = PlanStatus::Ok;
+    w.speed_setpoint = std::clamp(t.state.speed, 0.0, legSpeed());
+    w.course_setpoint = courseOf(*lane - p);
+    w.waypoints = {PlannedWaypoint{p, 0.0, w.course_setpoint, w.speed_setpoint},
+                   PlannedWaypoint{*lane, 0.0, w.course_setpoint, w.speed_setpoint}};
+    w.message = strFormat(
+        "Rule 9(e): no room to overtake %s in the narrow fairway (%.0f m beside her, %.0f m "
+        "needed): following her at %.1f m/s",
+        t.state.id.c_str(), room, need, w.speed_setpoint);
+    return w;
+  }
+  return std::nullopt;
 }
 
 double PlanFollower::predictedClearance(const std::vector<PlannerTarget>& targets) const {
@@ -758,6 +803,12 @@ const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<Pl
   // the separation net's stop) is sailed: the ship slows at the fairway's starboard edge instead.
   if (plan.status == PlanStatus::Fallback && !plan.along_fairway_edge)
     fairwayFallback(plan, "no plan keeps every rule: " + plan.message);
+  if (plan.status == PlanStatus::Ok)
+    if (auto wait = waitForRoom(targets, plan.passing_distance)) {
+      wait->compute_time = plan.compute_time;
+      wait->passing_distance = plan.passing_distance;
+      plan = std::move(*wait);
+    }
   if (plan.status == PlanStatus::Fallback)
     ++fallbacks_;
   (void)why;

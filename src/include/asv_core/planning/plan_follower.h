@@ -14,7 +14,8 @@
 //    plan the ship rejoins the active leg by line of sight (not the straight line to the goal);
 //  - in a narrow fairway of the route (Rule 9, fairway.h) the route's waypoints and the line of sight
 //    are moved across the leg into the fairway's starboard lane, and the fallback steers for its
-//    starboard edge at the fallback speed (Rule 8(e)) instead of holding course or stopping in it.
+//    starboard edge at the fallback speed (Rule 8(e)) instead of holding course or stopping in it; a
+//    ship she overtakes there without room to pass is followed at her speed (Rule 9(e)).
 // Times are the caller's clock (simulation or ROS time) in seconds.
 #pragma once
 
@@ -167,7 +168,8 @@ public:
   Plan fallback(const std::vector<PlannerTarget>& targets, const std::string& why,
                 std::optional<double> hold_course = std::nullopt) const;
   // Stores a plan made at `now` (NoSolution becomes the fallback; in a narrow fairway any fallback the
-  // fairway fallback) and the risk levels it saw.
+  // fairway fallback, and an Ok plan waitForRoom's when there is no room to overtake) and the risk
+  // levels it saw.
   // Returns the plan in force.
   const Plan& acceptPlan(Plan plan, double now, const std::vector<PlannerTarget>& targets,
                          const std::string& why);
@@ -230,6 +232,11 @@ private:
   // (Plan::along_fairway_edge; waypoints: the ship, the edge point), its compute time kept; false, `f`
   // untouched, outside one or when land lies between the ship and the edge.
   bool fairwayFallback(Plan& f, const std::string& why) const;
+  // Rule 9(e): in a narrow fairway the own ship overtakes only with room to pass. A ship she overtakes
+  // (Encounter::Overtaking) within kOvertakeLook ahead along the leg, beside which neither side of the
+  // fairway leaves `passing` (0: kSeparationMargin x min_separation) plus the bank clearance, is
+  // followed in the starboard lane at her speed (an Ok plan saying so); nullopt otherwise.
+  std::optional<Plan> waitForRoom(const std::vector<PlannerTarget>& targets, double passing) const;
 
   PlanFollowerConfig cfg_;
   std::optional<Eigen::Vector2d> goal_;
