@@ -255,3 +255,18 @@ TEST(Fairway, OvertakingWaitsForRoomInANarrowChannel) {
   tug.state.position = {40, -1700};
   EXPECT_DOUBLE_EQ(far_behind.acceptPlan(overtake, 0.0, {tug}, "test").speed_setpoint, 5.0);
 }
+
+TEST(Fairway, NoLaneBehindAPiersEnd) {
+  // A pier from the east bank to 60 m east of the middle, 260 m ahead: the way to the lane point
+  // (100, -1700) runs into it (at y = -1750, x = 83 m), so she keeps the route's line of sight, north.
+  PlanFollowerConfig cfg;
+  cfg.cruise_speed = 5.0;
+  auto land = channel(200);
+  land.push_back({"pier", {{60, -1760}, {200, -1760}, {200, -1740}, {60, -1740}}, nullptr});
+  PlanFollower f(cfg);
+  f.setObstacles(land);
+  f.setRoute({wp(0, 0), wp(0, 3000)});
+  f.updateOwn(northbound(0, -2000));
+  f.acceptPlan(spentPlan({0, -2000}), 0.0, {}, "test");
+  EXPECT_NEAR(courseDeg(f), 0.0, 1e-6);
+}

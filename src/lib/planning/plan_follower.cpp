@@ -442,7 +442,15 @@ std::optional<Eigen::Vector2d> PlanFollower::laneAhead(double lookahead, bool ed
     return std::nullopt;
   const double weight =
       progress_->onLastLeg() ? std::min(1.0, (progress_->goal() - q).norm() / kFairwayTaper) : 1.0;
-  return q + weight * (*side - q);
+  const Eigen::Vector2d lane = q + weight * (*side - q);
+  if (!wayClearOfLand(own_->position, lane))
+    return std::nullopt;
+  return lane;
+}
+
+bool PlanFollower::wayClearOfLand(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
+  const double required = landRequirement(from, to, obstacles_, cfg_.min_obstacle_clearance_m);
+  return !(required > 0.0) || trackObstacleDistance({from, to}, obstacles_) >= required;
 }
 
 std::optional<Eigen::Vector2d> PlanFollower::fairwayLineOfSight(bool edge) const {
@@ -484,11 +492,14 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
     pr.route = progress_->waypointsBeforeGoal();  // the voyage plan's next waypoints
     // Rule 9(a): in a narrow fairway each is moved to the starboard lane across its leg.
     const Route& r = progress_->route();
+    Eigen::Vector2d from = pr.own.position;
     for (size_t k = 0; k < pr.route.size(); ++k) {
       const size_t i = progress_->active() + k;
       const Eigen::Vector2d a = i == progress_->active() ? progress_->legStart() : r[i - 1].position;
-      if (auto lane = starboardSide(a, r[i].position, r[i].position, r[i], false))
+      const auto lane = starboardSide(a, r[i].position, r[i].position, r[i], false);
+      if (lane && wayClearOfLand(from, *lane))
         pr.route[k] = *lane;
+      from = pr.route[k];
     }
     // A ship out of the lane joins it ahead of her (laneJoin).
     if (auto join = laneJoin())
@@ -570,8 +581,8 @@ Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std
 bool PlanFollower::fairwayFallback(Plan& f, const std::string& why) const {
   const auto edge = fairwayLineOfSight(true);
   const Eigen::Vector2d p = own_->position;
-  if (!edge || trackObstacleDistance({p, *edge}, obstacles_) <= 0.0)
-    return false;  // not in a narrow fairway, or land between her and its edge: the open-water fallback
+  if (!edge)
+    return false;  // not in a narrow fairway, or land on the way to its edge: the open-water fallback
   f.status = PlanStatus::Fallback;
   f.along_fairway_edge = true;
   f.waypoints = {PlannedWaypoint{p, 0.0, 0.0, 0.0}, PlannedWaypoint{*edge, 0.0, 0.0, 0.0}};

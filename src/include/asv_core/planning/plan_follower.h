@@ -222,8 +222,12 @@ private:
   // her (RouteProgress::lineOfSight) moved to the fairway's starboard lane (or edge), less so over the
   // last kFairwayTaper before the goal so that she arrives. nullopt without a route or a narrow fairway.
   std::optional<Eigen::Vector2d> fairwayLineOfSight(bool edge) const;
-  // The same for a point `lookahead` ahead of her abeam point on the active leg.
+  // The same for a point `lookahead` ahead of her abeam point on the active leg; nullopt too when the way
+  // to it is not clear of land (wayClearOfLand).
   std::optional<Eigen::Vector2d> laneAhead(double lookahead, bool edge) const;
+  // The straight way from `from` to `to` keeps landRequirement from land (a lane point is found across
+  // its leg; the way to it may still pass a pier's end).
+  bool wayClearOfLand(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const;
   // Where a ship out of the starboard lane of a narrow fairway joins it (kLaneJoinRatio); nullopt when
   // she is in it (or there is none), or the active waypoint comes first.
   std::optional<Eigen::Vector2d> laneJoin() const;
