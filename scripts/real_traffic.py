@@ -134,7 +134,7 @@ def make_scenarios(log, out, picks, duration):
     return made, refused
 
 
-def run(out, made, planners, jobs):
+def run(out, made, planners, jobs, follower=()):
     if not shutil.which("parallel"):
         sys.exit("real_traffic: GNU parallel is missing (scripts/setup installs it)")
     batch = tool("asv_batch", "asv_sim")
@@ -148,8 +148,10 @@ def run(out, made, planners, jobs):
     with open(todo, "w") as f:
         f.write("\n".join(lines) + "\n")
     cmd = ["parallel", "--colsep", "\t", "--halt", "never", "--joblog", todo + ".log", "-j", str(jobs),
-           batch, "--scenario", "{1}", "--planner", "{2}", "--quiet", "--json", "{3}.part", "&&", "mv", "{3}.part",
-           "{3}", "::::", todo]
+           batch, "--scenario", "{1}", "--planner", "{2}", "--quiet"]
+    for kv in follower:
+        cmd += ["--follower", kv]
+    cmd += ["--json", "{3}.part", "&&", "mv", "{3}.part", "{3}", "::::", todo]
     print("real_traffic: %d runs on %d job slot(s)..." % (len(lines), jobs), flush=True)
     started = time.time()
     proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL)
@@ -248,6 +250,8 @@ def report(out, log, results, summary, refused, wall):
         lines += window_table(rows, list(summary[rng])) + [""]
     if refused:
         lines += ["Windows the scenario tool refused (`refused.txt`):", ""] + ["- " + r for r in refused] + [""]
+    if wall.get("follower"):
+        lines += ["Follower settings over planner_node.yaml's: `%s`." % "`, `".join(wall["follower"]), ""]
     if wall.get("seconds"):
         lines += ["Wall time of the runs: %.0f s." % wall["seconds"], ""]
     with open(os.path.join(out, "report.md"), "w") as f:
@@ -264,6 +268,9 @@ def main():
     ap.add_argument("--duration", type=float, default=600.0, help="window she is followed for [s] (default 600)")
     ap.add_argument("--step", type=float, default=480.0, help="between window starts [s] (default 480)")
     ap.add_argument("--per-start", type=int, default=3, help="vessels per window start (default 3)")
+    ap.add_argument("--follower", action="append", default=[], metavar="KEY=VALUE",
+                    help="a planner_node replanning-policy parameter for every run, as asv_batch --follower "
+                    "(repeatable), e.g. narrow_fairway_width_m=0 to compare without Rule 9")
     ap.add_argument("--report-only", action="store_true", help="report the runs already in OUT/runs")
     a = ap.parse_args()
     planners = [p for p in a.planners.split(",") if p]
@@ -273,7 +280,7 @@ def main():
         print("real_traffic: SKIPPED: no AIS log at %s (set ASV_AIS_LOG or --csv)" % a.csv)
         return 0
     out = os.path.abspath(a.out)
-    wall, refused = {"jobs": a.jobs}, []
+    wall, refused = {"jobs": a.jobs, "follower": a.follower}, []
     if not a.report_only:
         shutil.rmtree(out, ignore_errors=True)
         os.makedirs(out)
@@ -286,7 +293,7 @@ def main():
         made, refused = make_scenarios(a.csv, out, picks, a.duration)
         print("real_traffic: %d windows picked, %d made, %d refused (refused.txt)" % (
             len(picks), len(made), len(refused)), flush=True)
-        wall["seconds"] = run(out, made, planners, a.jobs)
+        wall["seconds"] = run(out, made, planners, a.jobs, a.follower)
     elif os.path.exists(os.path.join(out, "refused.txt")):
         refused = open(os.path.join(out, "refused.txt")).read().splitlines()
     results = load(out)
