@@ -35,14 +35,12 @@ phase() {
 build_tests() { eval "$ASV_CATKIN -j$JOBS tests"; }
 
 # ctest_group NAME REGEX: the catkin tests whose ctest name matches, JOBS at a time; the log keeps each
-# test's time (Test #n: name ... sec) and the output of the failures. Rostests run 1.5 x JOBS at a time
-# within scripts/ctest_resources.json's 6 slots of `load`, which a whole-pipeline rostest (2) and a test
-# timed in wall seconds (5) ask for (asv_bringup/CMakeLists.txt): a timed test only ever runs beside
-# single nodes' tests.
+# test's time (Test #n: name ... sec) and the output of the failures. scripts/ctest_resources.json:
+# 4 slots of `load`, which a whole-pipeline rostest (2) and a test timed in wall seconds (3) ask for
+# (asv_bringup/CMakeLists.txt), so a timed test only ever runs beside a single node's test.
 ctest_group() {
-  local name=$1 regex=$2 jobs=$JOBS
-  [ "$name" = rostest ] && jobs=$((JOBS * 3 / 2))
-  ctest --test-dir build -j"$jobs" -R "$regex" --timeout 1800 --output-on-failure \
+  local name=$1 regex=$2
+  ctest --test-dir build -j"$JOBS" -R "$regex" --timeout 1800 --output-on-failure \
     --resource-spec-file "$PWD/scripts/ctest_resources.json" > "$logs/$name.log" 2>&1
   grep -E "tests passed|tests failed" "$logs/$name.log"
   grep -E "\*\*\*|Failed|Timeout" "$logs/$name.log" | grep -E "^ *[0-9]+/[0-9]+ Test" || true
