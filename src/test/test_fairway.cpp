@@ -44,6 +44,17 @@ ShipState northbound(double x, double y) {
   return s;
 }
 
+// A follower of the route up the middle of the channel `land` from (0, 0) to (0, 3000), the ship at
+// (x, y) heading north.
+PlanFollower inChannel(const PlanFollowerConfig& cfg, const std::vector<StaticObstacle>& land, double x,
+                       double y) {
+  PlanFollower f(cfg);
+  f.setObstacles(land);
+  f.setRoute({wp(0, 0), wp(0, 3000)});
+  f.updateOwn(northbound(x, y));
+  return f;
+}
+
 // A plan whose waypoints are already behind her: setpoint() steers by the route's line of sight.
 Plan spentPlan(const Eigen::Vector2d& at) {
   Plan p;
@@ -111,10 +122,7 @@ TEST(Fairway, TheStarboardLaneAndEdge) {
 TEST(Fairway, TheFollowerKeepsToTheStarboardLaneOfANarrowChannel) {
   PlanFollowerConfig cfg;
   cfg.cruise_speed = 5.0;
-  PlanFollower f(cfg);
-  f.setObstacles(channel(200));
-  f.setRoute({wp(0, 0), wp(0, 3000)});
-  f.updateOwn(northbound(0, -2000));
+  PlanFollower f = inChannel(cfg, channel(200), 0, -2000);
   // The planners steer for the active waypoint moved 100 m to starboard (the lane across its leg), and,
   // she being 100 m out of the lane, join it first 5 x 100 m ahead: at (100, -1500).
   const PlanningProblem pr = f.buildProblem(0.0, {});
@@ -124,10 +132,7 @@ TEST(Fairway, TheFollowerKeepsToTheStarboardLaneOfANarrowChannel) {
   EXPECT_NEAR(pr.route[1].x(), 100.0, 0.5);
   EXPECT_DOUBLE_EQ(pr.route[1].y(), 0.0);
   // Already in the lane (90 m to starboard of the leg, within 25 m of it): the waypoint alone.
-  PlanFollower in_lane(cfg);
-  in_lane.setObstacles(channel(200));
-  in_lane.setRoute({wp(0, 0), wp(0, 3000)});
-  in_lane.updateOwn(northbound(90, -2000));
+  PlanFollower in_lane = inChannel(cfg, channel(200), 90, -2000);
   EXPECT_EQ(in_lane.buildProblem(0.0, {}).route.size(), 1u);
   // Past the plan: 300 m ahead on the leg, (0, -1700), moved to (100, -1700): atan2(100, 300) = 18.43 deg.
   f.acceptPlan(spentPlan({0, -2000}), 0.0, {}, "test");
@@ -135,26 +140,17 @@ TEST(Fairway, TheFollowerKeepsToTheStarboardLaneOfANarrowChannel) {
 
   // In a channel 1.6 km wide the lane begins 400 m to starboard, but the ship keeps within 150 m of the
   // route (kMaxLaneShift): atan2(150, 300) = 26.57 deg.
-  PlanFollower broad(cfg);
-  broad.setObstacles(channel(800));
-  broad.setRoute({wp(0, 0), wp(0, 3000)});
-  broad.updateOwn(northbound(0, -2000));
+  PlanFollower broad = inChannel(cfg, channel(800), 0, -2000);
   broad.acceptPlan(spentPlan({0, -2000}), 0.0, {}, "test");
   EXPECT_NEAR(courseDeg(broad), radToDeg(std::atan2(150.0, 300.0)), 0.1);
 
   // In a channel 2 km wide, wider than 1 nm, and with the rule off: straight along the leg.
-  PlanFollower wide(cfg);
-  wide.setObstacles(channel(1000));
-  wide.setRoute({wp(0, 0), wp(0, 3000)});
-  wide.updateOwn(northbound(0, -2000));
+  PlanFollower wide = inChannel(cfg, channel(1000), 0, -2000);
   wide.acceptPlan(spentPlan({0, -2000}), 0.0, {}, "test");
   EXPECT_NEAR(courseDeg(wide), 0.0, 1e-9);
   PlanFollowerConfig off = cfg;
   off.narrow_fairway_width_m = 0.0;
-  PlanFollower no_rule(off);
-  no_rule.setObstacles(channel(200));
-  no_rule.setRoute({wp(0, 0), wp(0, 3000)});
-  no_rule.updateOwn(northbound(0, -2000));
+  PlanFollower no_rule = inChannel(off, channel(200), 0, -2000);
   no_rule.acceptPlan(spentPlan({0, -2000}), 0.0, {}, "test");
   EXPECT_NEAR(courseDeg(no_rule), 0.0, 1e-9);
   EXPECT_DOUBLE_EQ(no_rule.buildProblem(0.0, {}).route[0].x(), 0.0);
@@ -232,26 +228,17 @@ TEST(Fairway, OvertakingWaitsForRoomInANarrowChannel) {
   overtake.status = PlanStatus::Ok;
   overtake.course_setpoint = degToRad(340.0);
   overtake.speed_setpoint = 5.0;
-  PlanFollower narrow(cfg);
-  narrow.setObstacles(channel(80));
-  narrow.setRoute({wp(0, 0), wp(0, 3000)});
-  narrow.updateOwn(northbound(40, -2000));
+  PlanFollower narrow = inChannel(cfg, channel(80), 40, -2000);
   const Plan& waiting = narrow.acceptPlan(overtake, 0.0, {tug}, "test");
   EXPECT_EQ(waiting.status, PlanStatus::Ok);
   EXPECT_DOUBLE_EQ(waiting.speed_setpoint, 2.0);
   EXPECT_NE(waiting.message.find("no room to overtake tug"), std::string::npos) << waiting.message;
   // In the 400 m channel 300 m lie beside her (lane +100 m): room enough, the plan stands.
-  PlanFollower wide(cfg);
-  wide.setObstacles(channel(200));
-  wide.setRoute({wp(0, 0), wp(0, 3000)});
-  wide.updateOwn(northbound(100, -2000));
+  PlanFollower wide = inChannel(cfg, channel(200), 100, -2000);
   tug.state.position = {100, -1700};
   EXPECT_DOUBLE_EQ(wide.acceptPlan(overtake, 0.0, {tug}, "test").speed_setpoint, 5.0);
   // 600 m ahead, beyond the 500 m looked at: she closes in first.
-  PlanFollower far_behind(cfg);
-  far_behind.setObstacles(channel(80));
-  far_behind.setRoute({wp(0, 0), wp(0, 3000)});
-  far_behind.updateOwn(northbound(40, -2300));
+  PlanFollower far_behind = inChannel(cfg, channel(80), 40, -2300);
   tug.state.position = {40, -1700};
   EXPECT_DOUBLE_EQ(far_behind.acceptPlan(overtake, 0.0, {tug}, "test").speed_setpoint, 5.0);
 }
@@ -263,10 +250,7 @@ TEST(Fairway, NoLaneBehindAPiersEnd) {
   cfg.cruise_speed = 5.0;
   auto land = channel(200);
   land.push_back({"pier", {{60, -1760}, {200, -1760}, {200, -1740}, {60, -1740}}, nullptr});
-  PlanFollower f(cfg);
-  f.setObstacles(land);
-  f.setRoute({wp(0, 0), wp(0, 3000)});
-  f.updateOwn(northbound(0, -2000));
+  PlanFollower f = inChannel(cfg, land, 0, -2000);
   f.acceptPlan(spentPlan({0, -2000}), 0.0, {}, "test");
   EXPECT_NEAR(courseDeg(f), 0.0, 1e-6);
 }
