@@ -492,14 +492,6 @@ HumanRecord herRun(const std::vector<TrackPoint>& track, double radius) {
   return h;
 }
 
-double landDistance(const std::vector<StaticObstacle>& land, const Eigen::Vector2d& a,
-                    const Eigen::Vector2d& b) {
-  double d = std::numeric_limits<double>::infinity();
-  for (const auto& l : land)
-    d = std::min(d, obstacleDistance(l, a, b));
-  return d;
-}
-
 // Indices of `kept` (a thinned copy of pts) in pts: the thinning keeps points of the line in order.
 std::vector<size_t> keptIndices(const std::vector<Eigen::Vector2d>& pts,
                                 const std::vector<Eigen::Vector2d>& kept) {
@@ -537,8 +529,9 @@ Route herRoute(const std::vector<TrackPoint>& track, const ScenarioShip& own, co
   for (size_t k = 1; k < idx.size(); ++k) {
     double hers = std::numeric_limits<double>::infinity();
     for (size_t i = idx[k - 1]; i < idx[k]; ++i)
-      hers = std::min(hers, landDistance(o.land, pts[i], pts[i + 1]));
-    const bool cut = landDistance(o.land, pts[idx[k - 1]], pts[idx[k]]) < std::min(hers, o.clearance_m);
+      hers = std::min(hers, trackObstacleDistance({pts[i], pts[i + 1]}, o.land));
+    const bool cut =
+        trackObstacleDistance({pts[idx[k - 1]], pts[idx[k]]}, o.land) < std::min(hers, o.clearance_m);
     for (size_t i = cut ? idx[k - 1] + 1 : idx[k]; i <= idx[k]; ++i)
       legs.push_back(i);
   }
@@ -546,7 +539,7 @@ Route herRoute(const std::vector<TrackPoint>& track, const ScenarioShip& own, co
   size_t rounded = 0;
   for (size_t k = 1; k < legs.size(); ++k) {
     const Eigen::Vector2d &from = pts[legs[k - 1]], &to = pts[legs[k]];
-    if (landDistance(o.land, from, to) <= 0.0) {
+    if (trackObstacleDistance({from, to}, o.land) <= 0.0) {
       const auto round = landRoute(from, to, o.land, o.clearance_m, kRouteLandMargin);
       if (!round) {
         res.warnings.push_back(
