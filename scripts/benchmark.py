@@ -172,7 +172,8 @@ def finding(note):
                          (r"^rule 16: the give-way ship took no", "rule 16 no action"),
                          (r"^rule 16:", "rule 16 late"), (r"^rule 14:", "rule 14 port turn"),
                          (r"^rule 15: turned", "rule 15 port turn"), (r"^rule 15: crossed", "rule 15 crossed ahead"),
-                         (r"^rule 17\(c\)", "rule 17(c) port turn"), (r"^rule 17:", "rule 17 stand-on altered")]:
+                         (r"^rule 17\(c\)", "rule 17(c) port turn"), (r"^rule 17\(b\)", "rule 17(b) held on"),
+                         (r"^rule 17:", "rule 17 stand-on altered")]:
         if re.match(pattern, note):
             # The evaluator says whether a Rule 14/15/17(c) port turn was forced (no alternative open).
             return key + " (forced)" if "; forced: " in note else key

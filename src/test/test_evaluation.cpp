@@ -390,22 +390,79 @@ TEST(Evaluation, AnotherShipWithoutRiskDoesNotExcuseAnEarlyStandOnAlteration) {
   EXPECT_NEAR(t1.score, 0.5, 1e-12);
 }
 
-TEST(Evaluation, StandOnShipThatHoldsCourseAndSpeedIsNotPenalised) {
-  // Target from port at (-5000, 4000) heading east: relative position (-5000, 4000), relative velocity
-  // (5, -5): TCPA 900 s, DCPA |(-5000)(-5) - 4000 * 5| / 7.071 = 707.1 m (< 1852 m: risk). The own ship
-  // holds course and speed: no rule penalty. Safety: 707.1 m lies between r_nm 185.2 and r_min 926:
-  // 0.5 (707.1 - 185.2) / (926 - 185.2) = 0.352.
+TEST(Evaluation, StandOnShipThatHoldsCourseAndSpeedPastRMinIsNotPenalised) {
+  // Target from port at (-5000, 3000) heading east: relative position (-5000, 3000), relative velocity
+  // (5, -5): TCPA 800 s, DCPA |(-5000)(-5) - 3000 * 5| / 7.071 = 1414.2 m (< 1852 m: risk). Holding on,
+  // the give-way ship passes at 1414 m > r_min without doing anything, so Rule 17(b) never comes: no
+  // rule penalty. Safety: 0.5 + 0.5 (1414.2 - 926) / 926 = 0.7636.
   Script s;
-  s.tgt0 = {-5000.0, 4000.0};
+  s.tgt0 = {-5000.0, 3000.0};
   s.tgt_course_deg = 90.0;
   const RunResult r = record(s).finish();
   const TargetResult& t = r.own.targets.at(0);
   EXPECT_EQ(t.encounter, Encounter::CrossingStandOn);
   EXPECT_TRUE(t.colregs_ok);
+  EXPECT_NEAR(t.min_distance, 10000.0 / std::sqrt(50.0), 0.5);
+  EXPECT_NEAR(t.score, 0.5 + 0.5 * (t.min_distance - 926.0) / 926.0, 1e-9);
+}
+
+namespace {
+
+// Rule 17(b) on ts1 from port at (-5000, 4000) heading east at 5 m/s, which never gives way: relative
+// position (-5000 + 5t, 4000 - 5t) at time t, DCPA |(-5000)(-5) - 4000 * 5| / 7.071 = 707.1 m after
+// 900 s. The give-way ship's best own action is 90 deg to port (north, the own ship's velocity), which
+// freezes the range once taken: taken 60 s later (extremis_delay_s) it keeps 926 m while
+// (5(t+60) - 5000)^2 + (4000 - 5(t+60))^2 >= 926^2, i.e. 5(t+60) <= 4077.2, t <= 755.4 s. From the
+// sample at t = 756 s (range |(-1220, 220)| = 1239.7 m) she alone cannot keep r_min; the range falls
+// below 926 m at t = 815.4 s.
+Script extremis(std::map<double, double> own_course_deg) {
+  Script s;
+  s.tgt0 = {-5000.0, 4000.0};
+  s.tgt_course_deg = 90.0;
+  s.own_course_deg = std::move(own_course_deg);
+  return s;
+}
+
+}  // namespace
+
+TEST(Evaluation, StandOnShipThatHoldsIntoRMinGetsTheRule17bFinding) {
+  // The own ship holds on to the CPA at 707.1 m. At t = 756 s (own at (0, 3780)) 40 deg to starboard
+  // was open: relative velocity (1.786, -3.830), CPA after 169.2 s at |(-1220)(-3.830) - 220 * 1.786| /
+  // 4.226 = 1012.7 m, then back on 000 from (543.8, 4428.1) with ts1 at (-374, 4000): CPA
+  // |(-917.8)(-5) - (-428.1)(5)| / 7.071 = 951.7 m >= 926 m (30 deg gives 914 m on that leg). Score:
+  // safety 0.5 (707.1 - 185.2) / (926 - 185.2) = 0.352, x (1 - penalty_extremis 0.5).
+  const RunResult r = record(extremis({{0.0, 0.0}})).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_EQ(t.encounter, Encounter::CrossingStandOn);
+  EXPECT_FALSE(t.colregs_ok);
+  ASSERT_EQ(t.notes.size(), 2u);  // the finding and the closest approach
+  EXPECT_EQ(t.notes[0],
+            "rule 17(b): the stand-on ship held her course and speed into 707 m (< 926 m) from t=756 s, when "
+            "the give-way ship alone could no longer keep 926 m; 40 deg to starboard was open");
   const double dcpa = 5000.0 / std::sqrt(50.0);
   EXPECT_NEAR(t.min_distance, dcpa, 0.5);
-  EXPECT_NEAR(t.score, 0.5 * (t.min_distance - 185.2) / (926.0 - 185.2), 1e-9);
+  EXPECT_NEAR(t.score, 0.5 * 0.5 * (t.min_distance - 185.2) / (926.0 - 185.2), 1e-9);
   EXPECT_TRUE(r.safety_violation);
+
+  // With a 30 s delay the give-way ship's point comes later: 5(t + 30) <= 4077.2, t <= 785.4 s. At
+  // t = 786 s (own at (0, 3930), ts1 at (-1070, 4000)) nothing was open to the own ship either (the
+  // best, 50 deg to starboard, passes at 890 m; half speed at 416 m): no Rule 17(b) finding.
+  EvaluationConfig quick;
+  quick.extremis_delay_s = 30.0;
+  const RunResult rq = record(extremis({{0.0, 0.0}}), quick).finish();
+  const TargetResult& q = rq.own.targets.at(0);
+  EXPECT_FALSE(hasNote(q, "rule 17(b)"));
+  EXPECT_TRUE(q.colregs_ok);
+}
+
+TEST(Evaluation, StandOnShipThatActsAtTheExtremisPointHasNoRule17bFinding) {
+  // The same ships; the own ship turns 40 deg to starboard at t = 760 s, after the give-way ship alone
+  // could no longer keep r_min (756 s) but before the range falls below it (815 s). TCPA 140 s and DCPA
+  // 707 m then: urgent (Hu level 2), so Rule 17(a)(ii) allows it too. No Rule 17 finding of any kind.
+  const RunResult r = record(extremis({{0.0, 0.0}, {760.0, 40.0}})).finish();
+  const TargetResult& t = r.own.targets.at(0);
+  EXPECT_FALSE(hasNote(t, "rule 17"));
+  EXPECT_TRUE(t.colregs_ok);
 }
 
 TEST(Evaluation, TenDegreeAlterationGetsTheRule8Penalty) {
@@ -647,6 +704,9 @@ TEST(Evaluation, ConfigValidatesAndReadsParams) {
   const EvaluationConfig c = EvaluationConfig::fromParams(p);
   EXPECT_DOUBLE_EQ(c.apparent_course_deg, 20.0);
   EXPECT_DOUBLE_EQ(c.hu.t_safe_s, 300.0);
+  ParamMap extremis;
+  extremis.set("extremis_delay_s", -1.0);
+  EXPECT_THROW(EvaluationConfig::fromParams(extremis), std::invalid_argument);
   ParamMap typo;
   typo.set("apparent_course", 20.0);
   EXPECT_THROW(EvaluationConfig::fromParams(typo), std::invalid_argument);

@@ -44,6 +44,7 @@ void EvaluationConfig::validate() const {
   require(safety_at_r_min > 0.0 && safety_at_r_min < 1.0, "safety_at_r_min must be in (0, 1)");
   require(pos(entry_tcpa_s) && pos(entry_dcpa_m), "entry_tcpa_s and entry_dcpa_m must be > 0");
   require(pos(duty_tcpa_s) && pos(duty_effect_s), "duty_tcpa_s and duty_effect_s must be > 0");
+  require(std::isfinite(extremis_delay_s) && extremis_delay_s >= 0.0, "extremis_delay_s must be >= 0");
   require(pos(action_course_deg) && action_course_deg < 180.0, "action_course_deg must be in (0, 180)");
   require(action_speed_fraction > 0.0 && action_speed_fraction <= 1.0,
           "action_speed_fraction must be in (0, 1]");
@@ -55,7 +56,7 @@ void EvaluationConfig::validate() const {
   require(pos(early_range_m) && pos(early_tcpa_s), "early_range_m and early_tcpa_s must be > 0");
   require(pos(cross_ahead_range_m), "cross_ahead_range_m must be > 0");
   require(frac(penalty_rule8) && frac(penalty_late) && frac(penalty_port) && frac(penalty_ahead) &&
-              frac(penalty_stand_on) && frac(penalty_succession),
+              frac(penalty_stand_on) && frac(penalty_succession) && frac(penalty_extremis),
           "penalties must be in [0, 1]");
   require(pos(manoeuvre_threshold_deg) && manoeuvre_threshold_deg < 180.0,
           "manoeuvre_threshold_deg must be in (0, 180)");
@@ -93,6 +94,8 @@ EvaluationConfig EvaluationConfig::fromParams(const ParamMap& p) {
   c.penalty_succession = p.getDouble("penalty_succession", c.penalty_succession);
   c.duty_tcpa_s = p.getDouble("duty_tcpa_s", c.duty_tcpa_s);
   c.duty_effect_s = p.getDouble("duty_effect_s", c.duty_effect_s);
+  c.extremis_delay_s = p.getDouble("extremis_delay_s", c.extremis_delay_s);
+  c.penalty_extremis = p.getDouble("penalty_extremis", c.penalty_extremis);
   c.manoeuvre_threshold_deg = p.getDouble("manoeuvre_threshold_deg", c.manoeuvre_threshold_deg);
   c.manoeuvre_window_s = p.getDouble("manoeuvre_window_s", c.manoeuvre_window_s);
   c.sample_period_s = p.getDouble("sample_period_s", c.sample_period_s);
@@ -588,26 +591,23 @@ void RunRecorder::judgePortTurn(const Passage& p, TargetResult& r, double& facto
   penalise(r, factor, cfg_.penalty_port, std::string(rule) + ": " + what + where + forcedNote(p));
 }
 
-// Rules 14 and 15 ask the give-way ship to turn to starboard, and Rule 17(c) the stand-on ship not to
-// turn to port for a ship on her port side. A port turn was forced (our reading; it adds to the note,
-// the finding and its penalty stand) only when no alternative was open at the port turn itself (kport):
-// every alteration of 10, 20, ... 90 deg to starboard of the entry course at her speed, held until this
-// target is past (its CPA on that course, at least a minute) and then back on the entry course for as
-// long again (at least 5 minutes), and half speed on the entry course, would have passed some ship
-// (holding its course and speed) closer than the minimum separation, or come within the near-miss
-// range of land (0.1 nm by default, the planners' default clearance from land).
-std::string RunRecorder::alternativeOpen(const Passage& p) const {
-  const Point& own = *p.both[p.kport > p.ke ? p.kport - 1 : p.ke].first;
-  const ShipState& entry = p.both[p.ke].first->s;
-  const ShipState& tgt = p.both[p.kport > p.ke ? p.kport - 1 : p.ke].second->s;
+// An alternative open to the own ship at sample k (our reading, for a forced port turn and Rule
+// 17(b)): an alteration of 10, 20, ... 90 deg to starboard of `course` at her speed, held until this
+// target is past (its CPA on that course, at least a minute) and then back on `course` for as long
+// again (at least 5 minutes), or half speed on `course`, that passes every ship (holding its course and
+// speed) at the minimum separation or more and keeps the near-miss range from land (0.1 nm by default,
+// the planners' default clearance from land). "" when none does.
+std::string RunRecorder::alternativeOpen(const Passage& p, size_t k, double course) const {
+  const Point& own = *p.both[k].first;
+  const ShipState& tgt = p.both[k].second->s;
   for (int turn = 10; turn <= 90; turn += 10) {
-    const Eigen::Vector2d v = courseSpeedToVelocity(entry.course + degToRad(turn), own.s.speed);
+    const Eigen::Vector2d v = courseSpeedToVelocity(course + degToRad(turn), own.s.speed);
     const Cpa c = computeCpa(own.s.position, v, tgt.position, tgt.velocity());
     const double hold = std::max(60.0, c.tcpa);
-    if (keepsClear(p, own, v, hold, courseSpeedToVelocity(entry.course, own.s.speed)))
+    if (keepsClear(p, own, v, hold, courseSpeedToVelocity(course, own.s.speed)))
       return strFormat("%d deg to starboard was open", turn);
   }
-  const Eigen::Vector2d half = courseSpeedToVelocity(entry.course, 0.5 * own.s.speed);
+  const Eigen::Vector2d half = courseSpeedToVelocity(course, 0.5 * own.s.speed);
   const Cpa c = computeCpa(own.s.position, half, tgt.position, tgt.velocity());
   if (keepsClear(p, own, half, std::max(60.0, c.tcpa), half))
     return "half speed was open";
@@ -639,9 +639,14 @@ bool RunRecorder::keepsClear(const Passage& p, const Point& own, const Eigen::Ve
   return true;
 }
 
-// The end of a port-turn note (Rules 14, 15, 17(c)): whether an alternative was open.
+// The end of a port-turn note (Rules 14, 15, 17(c)): whether an alternative was open at the port turn
+// itself (on the sample before it), to starboard of the entry course. Rules 14 and 15 ask the give-way
+// ship to turn to starboard, Rule 17(c) the stand-on ship not to turn to port for a ship on her port
+// side: the turn was forced (our reading; it adds to the note, the finding and its penalty stand) only
+// when no alternative was open.
 std::string RunRecorder::forcedNote(const Passage& p) const {
-  const std::string open = alternativeOpen(p);
+  const std::string open =
+      alternativeOpen(p, p.kport > p.ke ? p.kport - 1 : p.ke, p.both[p.ke].first->s.course);
   return open.empty() ? "; forced: no turn of 10-90 deg to starboard nor half speed kept clear"
                       : "; not forced: " + open;
 }
@@ -726,6 +731,64 @@ void RunRecorder::judgeStandOn(const Passage& p, TargetResult& r, double& factor
   }
   if (p.kport < both.size() && p.g.encounter == Encounter::CrossingStandOn)
     judgePortTurn(p, r, factor, "rule 17(c)", duties);
+  judgeExtremis(p, r, factor);
+}
+
+// Whether the give-way ship alone could still keep r_min at sample k (Rule 17(b), our reading): with
+// the own ship holding her course and speed, and the target holding hers for extremis_delay_s (the helm
+// and the swing), then turning 0, 10, ... 90 deg to either side at her speed, or keeping her course at
+// half speed or stopped; the closest approach of one of these is r_min or more. Velocity changes are
+// taken as instant after the delay, which puts the point late, in the stand-on ship's favour.
+bool RunRecorder::giveWayAloneKeepsClear(const Passage& p, size_t k) const {
+  const ShipState& own = p.both[k].first->s;
+  const ShipState& tgt = p.both[k].second->s;
+  const Eigen::Vector2d vo = own.velocity(), vt = tgt.velocity();
+  const double delay = cfg_.extremis_delay_s;
+  if (closestOnLeg(own.position, vo, tgt.position, vt, delay) < r_min_)
+    return false;
+  const Eigen::Vector2d o1 = own.position + vo * delay, t1 = tgt.position + vt * delay;
+  auto clear = [&](double turn_deg, double speed_factor) {
+    const Cpa c = computeCpa(
+        o1, vo, t1, courseSpeedToVelocity(tgt.course + degToRad(turn_deg), speed_factor * tgt.speed));
+    return (c.tcpa > 0.0 ? c.dcpa : c.range) >= r_min_;
+  };
+  for (int turn = -90; turn <= 90; turn += 10)
+    if (clear(turn, 1.0))
+      return true;
+  return clear(0.0, 0.5) || clear(0.0, 0.0);
+}
+
+// Rule 17(b): "When, from any cause, the vessel required to keep her course and speed finds herself so
+// close that collision cannot be avoided by the action of the give-way vessel alone, she shall take
+// such action as will best aid to avoid collision." Read with the minimum separation for collision
+// (the referee's line): from the first sample (kx) at which the give-way ship alone could no longer keep
+// r_min, the own ship made no action (action_course_deg from her course at kx, or action_speed_fraction
+// of her speed) before the range fell below r_min, although an alternative was open at kx.
+void RunRecorder::judgeExtremis(const Passage& p, TargetResult& r, double& factor) const {
+  const Instants& both = p.both;
+  size_t kx = p.ke;
+  while (kx <= p.kc && (p.cpas[kx].tcpa <= 0.0 || giveWayAloneKeepsClear(p, kx)))
+    ++kx;
+  if (kx > p.kc)
+    return;
+  const ShipState& at = both[kx].first->s;
+  size_t kb = kx;
+  for (; kb <= p.kc && p.cpas[kb].range >= r_min_; ++kb) {
+    const ShipState& s = both[kb].first->s;
+    if (std::fabs(wrapPi(s.course - at.course)) >= degToRad(cfg_.action_course_deg) ||
+        s.speed <= (1.0 - cfg_.action_speed_fraction) * at.speed)
+      return;  // she acted
+  }
+  if (kb > p.kc)
+    return;  // the range never fell below r_min
+  const std::string open = alternativeOpen(p, kx, at.course);
+  if (open.empty())
+    return;
+  penalise(r, factor, cfg_.penalty_extremis,
+           strFormat("rule 17(b): the stand-on ship held her course and speed into %.0f m (< %.0f m) from "
+                     "t=%.0f s, when the give-way ship alone could no longer keep %.0f m; ",
+                     p.cpas[p.kc].range, r_min_, both[kx].first->t, r_min_) +
+               open);
 }
 
 void RunRecorder::finishScore(TargetResult& r, double factor) const {

@@ -69,6 +69,10 @@ struct EvaluationConfig {
   // the action has widened its CPA without cutting the stand-on target's (our reading).
   double duty_tcpa_s = 900.0;   // [s] 15 min: the other ship's own action window
   double duty_effect_s = 60.0;  // [s] when the action's effect on the CPAs is measured
+  // Rule 17(b): the give-way ship alone can no longer avoid the close-quarters situation once none of
+  // her actions (a turn of up to 90 deg to either side, half speed or a stop), taken extremis_delay_s
+  // after the instant (the helm and the swing), keeps r_min (our reading).
+  double extremis_delay_s = 60.0;  // [s]
 
   // Penalties (fractions of the target's score removed; the score is safety x prod(1 - p)).
   double penalty_rule8 = 0.3;       // x (1 - alteration / apparent): not readily apparent
@@ -77,6 +81,7 @@ struct EvaluationConfig {
   double penalty_ahead = 0.5;       // Rule 15: crossed ahead of the stand-on ship
   double penalty_stand_on = 0.5;    // Rule 17: the stand-on ship acted before it was allowed to
   double penalty_succession = 0.3;  // Rule 8(b): more than two small alterations in one sense in a row
+  double penalty_extremis = 0.5;    // Rule 17(b): the stand-on ship held on into r_min, an action open
 
   // Manoeuvres: a course set-point change of at least manoeuvre_threshold_deg from the last settled
   // set-point; later changes within manoeuvre_window_s of its start belong to the same manoeuvre.
@@ -299,13 +304,16 @@ private:
   void judgeCrossAhead(const Passage& p, TargetResult& r, double& factor) const;
   void judgePortTurn(const Passage& p, TargetResult& r, double& factor, const char* rule,
                      const std::vector<GiveWayDuty>& duties) const;
-  // The first alternative to a port turn that was open at it ("" when none was: the turn was forced).
-  std::string alternativeOpen(const Passage& p) const;
+  // The first alternative open to the own ship at sample k ("" when none was): a turn to starboard of
+  // `course`, or half speed on it (a port turn was forced when none was open).
+  std::string alternativeOpen(const Passage& p, size_t k, double course) const;
   bool keepsClear(const Passage& p, const Point& own, const Eigen::Vector2d& v1, double hold,
                   const Eigen::Vector2d& v2) const;
   std::string forcedNote(const Passage& p) const;
   void judgeStandOn(const Passage& p, TargetResult& r, double& factor,
                     const std::vector<GiveWayDuty>& duties) const;
+  bool giveWayAloneKeepsClear(const Passage& p, size_t k) const;
+  void judgeExtremis(const Passage& p, TargetResult& r, double& factor) const;
   const Point* sampleAt(size_t k, double t) const;
   std::optional<Cpa> cpaAt(size_t i, size_t j, double t) const;
   std::string dutyNotReal(const Passage& p, const GiveWayDuty& d, double t_action) const;
