@@ -26,7 +26,7 @@ RANGES = [("test", 7919), ("tuning", 1)]
 PLANNERS = ["aco", "mopso", "ga", "dssa", "dssa_plus"]
 CLASSES = ["head_on", "crossing_give_way", "crossing_stand_on", "overtaking", "being_overtaken", "rule_breaker",
            "multi", "converging", "coastal", "offset_head_on", "head_on_starboard_occupied",
-           "head_on_crossing_boundary", "stand_on_remote_duty"]
+           "head_on_crossing_boundary", "stand_on_remote_duty", "late_give_way", "route_bend_crossing"]
 # The pass rules the planners are held to (docs/evaluation.md): no own-ship collision or grounding, the
 # minimum separation kept in at least 99 % of runs, mean COLREGs score >= 0.95 with one target, >= 0.85 with
 # several.
@@ -387,8 +387,8 @@ def plots(out, results, planners):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--situations", type=int, default=390,
-                    help="situations per range (default 390: 30 per class; 2 ranges x 5 planners = 3900 runs)")
+    ap.add_argument("--situations", type=int, default=450,
+                    help="situations per range (default 450: 30 per class; 2 ranges x 5 planners = 4500 runs)")
     ap.add_argument("--planners", default=",".join(PLANNERS), help="comma-separated (default: all five)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count(), help="parallel job slots (default: every core)")
     ap.add_argument("--sshloginfile", help="GNU parallel's host list: spread the runs over several machines")

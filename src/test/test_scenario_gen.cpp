@@ -189,6 +189,61 @@ TEST(ScenarioGen, FamiliesThatProbeTheReferee) {
   EXPECT_GT(anchored, 0);
 }
 
+TEST(ScenarioGen, LateGiveWayAndRouteBendFamilies) {
+  const double nm = kMetresPerNauticalMile, slack = 1.0;
+  int kinds[3] = {0, 0, 0};  // head-on, from port, overtaking the own ship
+  int offset_behaviours[3] = {0, 0, 0};
+  int bends[2] = {0, 0};  // to port, to starboard
+  for (uint64_t i = 0; i < 12; ++i) {
+    const Scenario lg = generateScenario(kCfg, SituationClass::LateGiveWay, 5, i).scenario;
+    ASSERT_EQ(lg.targets.size(), 1u);
+    EXPECT_EQ(lg.targets[0].behaviour, Behaviour::LateGiveWay) << lg.name;
+    const double rb = relativeBearingDeg(lg.own, lg.targets[0]);
+    const bool head_on = std::fabs(courseDiffDeg(lg.own, lg.targets[0]) - 180.0) <= 6.1;
+    ++kinds[head_on ? 0 : rb > 247.5 ? 1 : 2];
+    if (!head_on && rb <= 247.5) {
+      EXPECT_GT(rb, 112.5) << lg.name;  // abaft the beam: overtaking
+    }
+    const HandCpa c = handCpa(lg.own, lg.targets[0]);
+    EXPECT_LE(c.dcpa, 0.3 * nm + slack) << lg.name;
+
+    const Behaviour b =
+        generateScenario(kCfg, SituationClass::OffsetHeadOn, 5, i).scenario.targets[0].behaviour;
+    ++offset_behaviours[b == Behaviour::GiveWay ? 0 : b == Behaviour::NonCompliant ? 1 : 2];
+    EXPECT_TRUE(b == Behaviour::GiveWay || b == Behaviour::NonCompliant || b == Behaviour::LateGiveWay);
+
+    // The bend: the own ship sails her course to route[0] (5-15 min), then 30-60 deg to either side
+    // to route[1]; the target meets her on the second leg as if she had sailed it from the start.
+    const Scenario rb_s = generateScenario(kCfg, SituationClass::RouteBendCrossing, 5, i).scenario;
+    ASSERT_EQ(rb_s.own.route.size(), 2u) << rb_s.name;
+    const Eigen::Vector2d leg1 = rb_s.own.route[0].position - rb_s.own.position;
+    const Eigen::Vector2d leg2 = rb_s.own.route[1].position - rb_s.own.route[0].position;
+    const double bend_time = leg1.norm() / rb_s.own.speed;
+    EXPECT_GE(bend_time, 300.0 - 1.0) << rb_s.name;
+    EXPECT_LE(bend_time, 900.0 + 1.0) << rb_s.name;
+    EXPECT_NEAR(std::remainder(std::atan2(leg1.x(), leg1.y()) - rb_s.own.course, 2.0 * M_PI), 0.0, 1e-3)
+        << rb_s.name;
+    ScenarioShip second = rb_s.own;
+    second.course = std::atan2(leg2.x(), leg2.y());
+    const double turn = std::remainder(radToDeg(second.course - rb_s.own.course), 360.0);
+    EXPECT_GE(std::fabs(turn), 30.0 - 0.1) << rb_s.name;
+    EXPECT_LE(std::fabs(turn), 60.0 + 0.1) << rb_s.name;
+    ++bends[turn > 0.0];
+    second.position = rb_s.own.route[0].position - leg2.normalized() * leg1.norm();
+    const HandCpa c2 = handCpa(second, rb_s.targets[0]);
+    EXPECT_GE(c2.tcpa, bend_time + 300.0 - 2.0) << rb_s.name;
+    EXPECT_LE(c2.tcpa, bend_time + 900.0 + 2.0) << rb_s.name;
+    EXPECT_LE(c2.dcpa, 0.3 * nm + slack) << rb_s.name;
+    EXPECT_EQ(rb_s.own.goal, rb_s.own.route[1].position);
+  }
+  for (int k : kinds)
+    EXPECT_GT(k, 0);
+  for (int k : offset_behaviours)
+    EXPECT_GT(k, 0);
+  EXPECT_GT(bends[0], 0);
+  EXPECT_GT(bends[1], 0);
+}
+
 TEST(ScenarioGen, AManoeuvreExistsOnlyWhileThereIsRoomToMakeIt) {
   // Head-on, 8 km apart, closing at 12 m/s (6 + 6). Acting at once, a 30-40 deg turn keeps 926 m. At
   // t = 580 s the range is 8000 - 12 x 580 = 1040 m: nothing can keep 926 m any more.

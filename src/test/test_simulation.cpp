@@ -131,6 +131,27 @@ TEST(Simulation, GiveWayTargetTurnsToStarboardNonCompliantStandsOn) {
   EXPECT_NEAR(radToDeg(pt.find("pt")->course_sp), 50.0, 1e-9);
 }
 
+TEST(Simulation, LateGiveWayTargetTurnsFifteenDegreesSixMinutesBeforeTheCpa) {
+  // The same crossing from port: relative position (-3000, 3000), relative velocity (5, -5), so the
+  // TCPA is 600 - t s. A late_give_way ship acts only at TCPA <= 360 s (t = 240 s) and by 15 deg.
+  Simulation sim(
+      parseScenario(scenarioYaml("  - {name: lg, position: {x_m: -3000, y_m: 3000}, course_deg: 90, "
+                                 "speed_mps: 5, behaviour: late_give_way}\n")));
+  run(sim, 239.0);
+  EXPECT_FALSE(sim.find("lg")->giving_way);
+  run(sim, 2.0);
+  ASSERT_TRUE(sim.find("lg")->giving_way);
+  EXPECT_NEAR(radToDeg(sim.find("lg")->course_sp), 105.0, 1e-9);
+  // From t = 240 s (own at (0, 1200), lg at (-1800, 3000)) on 105 deg: relative velocity (4.830, -6.294),
+  // DCPA |(-1800)(-6.294) - 1800 x 4.830| / 7.934 = 332 m with an instant turn: inside the own
+  // ship's minimum separation (926 m), clear of her hull.
+  run(sim, 600.0);
+  EXPECT_FALSE(sim.collided());
+  EXPECT_LT(sim.minSeparationOwn(), 926.0);
+  EXPECT_NEAR(sim.minSeparationOwn(), 332.0, 40.0);  // her swing at the kinematic turn rate
+  EXPECT_EQ(toString(Behaviour::LateGiveWay), std::string("late_give_way"));
+}
+
 TEST(Simulation, OwnShipWithoutPlannerSteersForItsGoalAndArrives) {
   Simulation sim(parseScenario(
       scenarioYaml("  - {name: a, position: {x_m: 5000, y_m: 0}, course_deg: 0, speed_mps: 1}\n",

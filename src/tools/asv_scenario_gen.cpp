@@ -32,7 +32,7 @@ const char* const kUsage =
     "\n"
     "  --out DIR            output folder (created)\n"
     "  --class NAME|all     one family (see --list-classes) or all (default): situation I is then\n"
-    "                       class I mod 13, in --list-classes order\n"
+    "                       class I mod 15, in --list-classes order\n"
     "  --count N            number of files (default 9)\n"
     "  --seed S             seed (default 1)\n"
     "  --first I            index of the first situation (default 0)\n"
@@ -56,7 +56,8 @@ const char* const kClassHelp =
     "multi              2-5 ships of any encounter, CPAs at independent times, 20 % rule-breakers\n"
     "converging         2-5 ships whose CPAs fall within 3 minutes of each other, 20 % rule-breakers\n"
     "coastal            1-3 ships with a coast on one side of the route or a channel\n"
-    "offset_head_on     one ship met nearly head-on 0.3-0.8 nm off either side; she gives way or never acts\n"
+    "offset_head_on     one ship met nearly head-on 0.3-0.8 nm off either side; she gives way, never acts,\n"
+    "                   or acts late and little\n"
     "head_on_starboard_occupied\n"
     "                   head-on, with a ship at anchor, a slow ship or a coast on the starboard side; a\n"
     "                   starboard manoeuvre is still open (Rules 14, 8)\n"
@@ -65,7 +66,12 @@ const char* const kClassHelp =
     "                   crossing boundary (Rules 14, 15)\n"
     "stand_on_remote_duty\n"
     "                   a ship crossing from port gives way (the own ship stands on), and a slow ship ahead\n"
-    "                   that she overtakes 0.5-0.9 nm abeam after 20-30 min (Rule 17 with several ships)\n";
+    "                   that she overtakes 0.5-0.9 nm abeam after 20-30 min (Rule 17 with several ships)\n"
+    "late_give_way      one ship that should give way (head-on, from port, overtaking) acts only 6 min\n"
+    "                   before the CPA and by 15 deg (Rules 16, 17(a)(ii), 17(b))\n"
+    "route_bend_crossing\n"
+    "                   the own route bends 30-60 deg either way after 5-15 min; a ship crossing the new\n"
+    "                   leg from either side meets her 5-15 min later (Rules 15, 17, 8)\n";
 
 struct Args {
   std::string out, cls = "all";
@@ -143,7 +149,8 @@ SituationClass classOf(const Args& a, unsigned long long index) {
 int breakers(const Scenario& s) {
   int n = 0;
   for (const auto& t : s.targets)
-    n += t.behaviour == Behaviour::NonCompliant || t.behaviour == Behaviour::PortTurn;
+    n += t.behaviour == Behaviour::NonCompliant || t.behaviour == Behaviour::PortTurn ||
+         t.behaviour == Behaviour::LateGiveWay;
   return n;
 }
 

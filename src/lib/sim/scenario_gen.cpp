@@ -152,7 +152,10 @@ std::vector<TargetDraw> drawProbe(Draw& d, const GeneratorConfig& cfg, Situation
       drawTarget(d, cfg, c == SituationClass::StandOnRemoteDuty ? Kind::FromPort : Kind::HeadOn, tcpa, 0.0);
   if (c == SituationClass::OffsetHeadOn) {
     t.dcpa = d.uniform(0.3, 0.8) * nm;
-    t.behaviour = d.chance(0.5) ? Behaviour::GiveWay : Behaviour::NonCompliant;
+    const double u = d.uniform(0.0, 1.0);  // gives way, never acts, or acts late and little: a third each
+    t.behaviour = u < 1.0 / 3.0   ? Behaviour::GiveWay
+                  : u < 2.0 / 3.0 ? Behaviour::NonCompliant
+                                  : Behaviour::LateGiveWay;
     t.check_encounter = false;  // an offset this large may put her just off the head-on sector
     t.what = "met nearly head-on, offset";
     return {t};
@@ -209,6 +212,20 @@ std::vector<TargetDraw> drawTargets(Draw& d, const GeneratorConfig& cfg, Situati
     case SituationClass::HeadOnCrossingBoundary:
     case SituationClass::StandOnRemoteDuty:
       return drawProbe(d, cfg, c, tcpa());
+    case SituationClass::LateGiveWay: {
+      constexpr Kind give_way[] = {Kind::HeadOn, Kind::FromPort, Kind::Overtaken};
+      const Kind kind = give_way[d.integer(0, 2)];  // drawn before the TCPA: one order on every compiler
+      TargetDraw t = drawTarget(d, cfg, kind, tcpa(), 0.0);
+      t.behaviour = Behaviour::LateGiveWay;
+      return {t};
+    }
+    case SituationClass::RouteBendCrossing: {
+      const Kind kind = d.chance(0.5) ? Kind::FromStarboard : Kind::FromPort;
+      TargetDraw t = drawTarget(d, cfg, kind, tcpa(), 0.0);
+      t.check_encounter = false;  // drawn against the route's second leg, not the first
+      t.what = std::string(describe(t.kind)) + " of the route's second leg";
+      return {t};
+    }
     default:
       break;
   }
@@ -285,6 +302,8 @@ const char* behaviourText(Behaviour b) {
       return "breaks the rules: stands on although she should give way";
     case Behaviour::PortTurn:
       return "breaks the rules: turns 40 deg to port instead of starboard";
+    case Behaviour::LateGiveWay:
+      return "gives way late and little: 15 deg to starboard, 6 min before the CPA";
     default:
       break;
   }
@@ -315,7 +334,7 @@ std::string description(SituationClass c, uint64_t seed, uint64_t index, const S
 double breachTime(const std::vector<TargetDraw>& draws) {
   double t = 0.0;
   for (const auto& d : draws) {
-    if (d.behaviour == Behaviour::NonCompliant)
+    if (d.behaviour == Behaviour::NonCompliant || d.behaviour == Behaviour::LateGiveWay)
       t = std::max(t, d.tcpa - HuRiskConfig{}.t_safe_s);
     else if (d.behaviour == Behaviour::PortTurn)
       t = std::max(t, d.tcpa - TrafficConfig{}.give_way_tcpa + 60.0);
@@ -329,6 +348,25 @@ struct Draft {
   double act_time = 0.0;
 };
 
+// RouteBendCrossing: the own route turns 30-60 deg to either side after 5-15 min, and the target meets
+// her 5-15 min after the bend. Returns the ship the targets are placed against: the own ship as if she
+// had sailed the second leg from the start (where she is on it after the bend), and sets the bend's time.
+ScenarioShip bendRoute(Draw& d, ScenarioShip& own, TargetDraw& target, double& bend_time, std::string& text) {
+  bend_time = roundTo(d.uniform(300.0, 900.0), 1.0);
+  const double turn = d.sign() * roundTo(d.uniform(30.0, 60.0), 1.0);
+  const Eigen::Vector2d bend = own.position + courseSpeedToVelocity(own.course, own.speed * bend_time);
+  ScenarioShip frame = own;
+  frame.course = degToRad(wrapDeg360(radToDeg(own.course) + turn));
+  frame.position = bend - courseSpeedToVelocity(frame.course, own.speed * bend_time);
+  target.tcpa = bend_time + d.uniform(300.0, 900.0);
+  RouteWaypoint w;
+  w.position = Eigen::Vector2d(roundTo(bend.x(), 0.1), roundTo(bend.y(), 0.1));
+  own.route = {w};
+  text = strFormat(" The own route bends %.0f deg to %s after %.0f min.", std::fabs(turn),
+                   turn > 0.0 ? "starboard" : "port", bend_time / 60.0);
+  return frame;
+}
+
 Draft drawScenario(Draw& d, const GeneratorConfig& cfg, SituationClass c, uint64_t seed, uint64_t index) {
   Draft out;
   Scenario& s = out.scenario;
@@ -339,13 +377,23 @@ Draft drawScenario(Draw& d, const GeneratorConfig& cfg, SituationClass c, uint64
   s.own = drawOwn(d, cfg);
   const bool channel = c == SituationClass::Coastal && d.chance(0.5);
   out.draws = drawTargets(d, cfg, c, channel);
+  ScenarioShip frame = s.own;  // the ship the targets are placed against
+  double bend_time = 0.0;
+  std::string bend;
+  if (c == SituationClass::RouteBendCrossing)
+    frame = bendRoute(d, s.own, out.draws[0], bend_time, bend);
   double last_cpa = 0.0;
   for (size_t i = 0; i < out.draws.size(); ++i) {
-    s.targets.push_back(placeTarget(s.own, out.draws[i], int(i) + 1));
+    s.targets.push_back(placeTarget(frame, out.draws[i], int(i) + 1));
     last_cpa = std::max(last_cpa, out.draws[i].tcpa);
   }
   const double route = roundTo(s.own.speed * (last_cpa + 1200.0), 10.0);
-  s.own.goal = s.own.position + courseSpeedToVelocity(s.own.course, route);
+  s.own.goal = frame.position + courseSpeedToVelocity(frame.course, route);
+  if (!s.own.route.empty()) {
+    RouteWaypoint end;
+    end.position = *s.own.goal;
+    s.own.route.push_back(end);
+  }
   s.duration = 60.0 * std::ceil((1.4 * route / s.own.speed + 300.0) / 60.0);
   std::string land;
   if (c == SituationClass::HeadOnStarboardOccupied && out.draws.size() == 1) {
@@ -369,8 +417,9 @@ Draft drawScenario(Draw& d, const GeneratorConfig& cfg, SituationClass c, uint64
     }
     land += strFormat(" of the route (clearance %.0f m).", cfg.obstacle_clearance_m);
   }
-  s.description = description(c, seed, index, s.own, out.draws, land);
-  out.act_time = breachTime(out.draws);
+  s.description = description(c, seed, index, s.own, out.draws, bend + land);
+  // After the bend the crossing is the one drawn: a manoeuvre for it is sought a minute later.
+  out.act_time = c == SituationClass::RouteBendCrossing ? bend_time + 60.0 : breachTime(out.draws);
   return out;
 }
 
@@ -419,7 +468,8 @@ std::string checkTraffic(const GeneratorConfig& cfg, const Scenario& s) {
   SimConfig sc;
   sc.dt = cfg.check_dt;
   Simulation sim(s, sc);
-  sim.setSetpoint(s.own.name, s.own.course, s.own.speed);
+  if (s.own.route.empty())  // else she sails her route
+    sim.setSetpoint(s.own.name, s.own.course, s.own.speed);
   while (!sim.finished())
     sim.step();
   for (const auto& e : sim.events()) {
@@ -449,11 +499,13 @@ bool manoeuvreKeepsClear(const Scenario& s, double act_time, double course_chang
   SimConfig sc;
   sc.dt = dt;
   Simulation sim(s, sc);
-  sim.setSetpoint(s.own.name, s.own.course, s.own.speed);
+  if (s.own.route.empty())  // else she sails her route until she acts
+    sim.setSetpoint(s.own.name, s.own.course, s.own.speed);
   bool acted = false;
   while (!sim.finished()) {
     if (!acted && sim.time() >= act_time - 1e-9) {
-      sim.setSetpoint(s.own.name, wrapTwoPi(s.own.course + course_change), s.own.speed * speed_factor);
+      const double course = s.own.route.empty() ? s.own.course : sim.own().cog();
+      sim.setSetpoint(s.own.name, wrapTwoPi(course + course_change), s.own.speed * speed_factor);
       acted = true;
     }
     sim.step();
@@ -530,7 +582,9 @@ const std::vector<SituationClass>& allSituationClasses() {
                                                SituationClass::OffsetHeadOn,
                                                SituationClass::HeadOnStarboardOccupied,
                                                SituationClass::HeadOnCrossingBoundary,
-                                               SituationClass::StandOnRemoteDuty};
+                                               SituationClass::StandOnRemoteDuty,
+                                               SituationClass::LateGiveWay,
+                                               SituationClass::RouteBendCrossing};
   return all;
 }
 
@@ -561,9 +615,13 @@ const char* toString(SituationClass c) {
     case SituationClass::HeadOnCrossingBoundary:
       return "head_on_crossing_boundary";
     case SituationClass::StandOnRemoteDuty:
+      return "stand_on_remote_duty";
+    case SituationClass::LateGiveWay:
+      return "late_give_way";
+    case SituationClass::RouteBendCrossing:
       break;
   }
-  return "stand_on_remote_duty";
+  return "route_bend_crossing";
 }
 
 std::optional<SituationClass> situationClassFromString(const std::string& name) {

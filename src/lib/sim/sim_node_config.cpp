@@ -23,6 +23,9 @@ void readSim(const ParamMap& p, SimConfig& s) {
       p.getDouble("give_way_alteration_deg", s.traffic.give_way_alteration_deg);
   s.traffic.give_way_tcpa = p.getDouble("give_way_tcpa", s.traffic.give_way_tcpa);
   s.traffic.give_way_dcpa = p.getDouble("give_way_dcpa", s.traffic.give_way_dcpa);
+  s.traffic.late_give_way_tcpa = p.getDouble("late_give_way_tcpa", s.traffic.late_give_way_tcpa);
+  s.traffic.late_give_way_alteration_deg =
+      p.getDouble("late_give_way_alteration_deg", s.traffic.late_give_way_alteration_deg);
   s.traffic.waypoint_acceptance = p.getDouble("waypoint_acceptance", s.traffic.waypoint_acceptance);
 }
 

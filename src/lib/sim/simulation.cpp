@@ -49,6 +49,10 @@ void TrafficConfig::validate() const {
           "traffic.give_way_alteration_deg must be in [30, 90] deg (Rule 8(b): readily apparent)");
   require(give_way_tcpa > 0.0 && std::isfinite(give_way_tcpa), "traffic.give_way_tcpa must be > 0 s");
   require(give_way_dcpa > 0.0 && std::isfinite(give_way_dcpa), "traffic.give_way_dcpa must be > 0 m");
+  require(late_give_way_tcpa > 0.0 && std::isfinite(late_give_way_tcpa),
+          "traffic.late_give_way_tcpa must be > 0 s");
+  require(late_give_way_alteration_deg > 0.0 && late_give_way_alteration_deg <= 90.0,
+          "traffic.late_give_way_alteration_deg must be in (0, 90] deg");
   require(waypoint_acceptance > 0.0 && std::isfinite(waypoint_acceptance),
           "traffic.waypoint_acceptance must be > 0 m");
 }
@@ -180,6 +184,8 @@ double Simulation::giveWayAlteration(const SimVessel& v, const ShipState& other)
   const double first = cfg_.traffic.give_way_alteration_deg;
   if (v.behaviour == Behaviour::PortTurn)
     return -degToRad(first);
+  if (v.behaviour == Behaviour::LateGiveWay)
+    return degToRad(cfg_.traffic.late_give_way_alteration_deg);
   for (double deg = first; deg < 90.0; deg += 10.0) {
     const Eigen::Vector2d velocity = courseSpeedToVelocity(v.cruise_course + degToRad(deg), v.cruise_speed);
     const Cpa cpa = computeCpa(v.position(), velocity, other.position, other.velocity());
@@ -209,7 +215,9 @@ void Simulation::giveWayLogic(SimVessel& v, size_t index) {
       continue;
     const ShipState other = vessels_[j].shipState();
     const Cpa cpa = computeCpa(me, other);
-    if (cpa.tcpa < 0.0 || cpa.tcpa > cfg_.traffic.give_way_tcpa || cpa.dcpa > cfg_.traffic.give_way_dcpa)
+    const double act_tcpa =
+        v.behaviour == Behaviour::LateGiveWay ? cfg_.traffic.late_give_way_tcpa : cfg_.traffic.give_way_tcpa;
+    if (cpa.tcpa < 0.0 || cpa.tcpa > act_tcpa || cpa.dcpa > cfg_.traffic.give_way_dcpa)
       continue;
     const EncounterGeometry g = classifyEncounter(me, other, cpa, ColregsConfig{});
     if (g.role == OwnRole::GiveWay || g.role == OwnRole::BothGiveWay) {
@@ -246,6 +254,7 @@ void Simulation::steer(SimVessel& v) {
   switch (v.behaviour) {
     case Behaviour::GiveWay:
     case Behaviour::PortTurn:
+    case Behaviour::LateGiveWay:
       giveWayLogic(v, static_cast<size_t>(&v - vessels_.data()));
       break;
     case Behaviour::Planner:

@@ -342,13 +342,16 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
       s.behaviour = Behaviour::NonCompliant;
     else if (b == "port_turn")
       s.behaviour = Behaviour::PortTurn;
+    else if (b == "late_give_way")
+      s.behaviour = Behaviour::LateGiveWay;
     else if (b == "planner")
       s.behaviour = Behaviour::Planner;
     else if (b == "track")
       s.behaviour = Behaviour::Track;
     else
       c.fail(n["behaviour"], w + "behaviour",
-             "must be constant, waypoints, give_way, non_compliant, port_turn, planner or track");
+             "must be constant, waypoints, give_way, non_compliant, port_turn, late_give_way, planner or "
+             "track");
     if (s.behaviour == Behaviour::Waypoints) {
       const YAML::Node wps = n["waypoints"];
       if (!wps || !wps.IsSequence() || wps.size() == 0)
@@ -386,6 +389,8 @@ const char* toString(Behaviour b) {
       return "non_compliant";
     case Behaviour::PortTurn:
       return "port_turn";
+    case Behaviour::LateGiveWay:
+      return "late_give_way";
     case Behaviour::Planner:
       return "planner";
     case Behaviour::Track:

@@ -29,7 +29,10 @@ namespace asv {
 // way or never acts), HeadOnStarboardOccupied (head-on with an anchored ship, a slow ship or a coast on
 // the starboard side, a starboard manoeuvre still open), HeadOnCrossingBoundary (8-35 deg off the
 // reciprocal, either bow), StandOnRemoteDuty (crossing from port, and a slow ship ahead the own ship
-// overtakes 0.5-0.9 nm abeam 20-30 min out).
+// overtakes 0.5-0.9 nm abeam 20-30 min out), LateGiveWay (a ship that should give way, head-on, from
+// port or overtaking, acts only 6 min before the CPA and by 15 deg), RouteBendCrossing (the own route
+// bends 30-60 deg either way 5-15 min out, and a ship crossing the new leg from either side meets her
+// 5-15 min after the bend).
 enum class SituationClass : uint8_t {
   HeadOn,
   CrossingGiveWay,
@@ -43,7 +46,9 @@ enum class SituationClass : uint8_t {
   OffsetHeadOn,
   HeadOnStarboardOccupied,
   HeadOnCrossingBoundary,
-  StandOnRemoteDuty
+  StandOnRemoteDuty,
+  LateGiveWay,
+  RouteBendCrossing
 };
 const std::vector<SituationClass>& allSituationClasses();
 const char* toString(SituationClass c);
@@ -83,10 +88,10 @@ struct GeneratedScenario {
 GeneratedScenario generateScenario(const GeneratorConfig& cfg, SituationClass situation, uint64_t seed,
                                    uint64_t index);
 
-// Whether some manoeuvre of the own ship (course change to either side up to 120 deg, speed kept,
-// halved or stopped), made at `act_time` after holding course and speed until then, keeps every
-// target at least `min_separation` away and, with obstacles, keeps `clearance` off them. port_too
-// false: only to starboard (or no course change).
+// Whether some manoeuvre of the own ship (course change to either side up to 120 deg from her course
+// then, speed kept, halved or stopped), made at `act_time` after holding course and speed (or sailing
+// her route, when she has one) until then, keeps every target at least `min_separation` away and, with
+// obstacles, keeps `clearance` off them. port_too false: only to starboard (or no course change).
 bool manoeuvreExists(const Scenario& s, double act_time, double min_separation, double clearance,
                      double dt = 1.0, bool port_too = true);
 

@@ -51,7 +51,8 @@ struct SimNodeConfig {
   // lockstep run needs the clock at every step (else only at steps with work, about 22 % faster).
   bool lockstep_clock_every_step = false;
   // Keys dt, collision_distance, wind_speed, wind_direction_deg, wave_direction_deg, wave_height,
-  // wave_length, give_way_alteration_deg, give_way_tcpa, give_way_dcpa, waypoint_acceptance.
+  // wave_length, give_way_alteration_deg, give_way_tcpa, give_way_dcpa, late_give_way_tcpa,
+  // late_give_way_alteration_deg, waypoint_acceptance.
   SimConfig sim;
   // Keys ais, radar, radar_range, radar_period, range_noise, bearing_noise_deg, speed_noise_kn,
   // course_noise_deg, radar_dropout, ais_dropout, static_interval.

@@ -28,7 +28,13 @@ struct TrafficConfig {
                                           // apparent (Rule 8(b)); a port_turn ship's whole alteration
   double give_way_tcpa = 900.0;           // [s] act when the CPA is this close in time (15 min) ...
   double give_way_dcpa = 1852.0;          // [m] ... and closer than this (1 nm)
-  double waypoint_acceptance = 200.0;     // [m] kinematic waypoint following: switch within this radius
+  // late_give_way behaviour: a give-way ship that acts late and little: when the CPA is this close in
+  // time (and closer than give_way_dcpa) she turns this much to starboard, whatever it passes. 6 min is
+  // inside the stand-on ship's urgent level (10 min, Hu et al. 2017), so her action is clearly lacking
+  // first; 15 deg is half a readily apparent turn (our choices).
+  double late_give_way_tcpa = 360.0;           // [s]
+  double late_give_way_alteration_deg = 15.0;  // [deg]
+  double waypoint_acceptance = 200.0;          // [m] kinematic waypoint following: switch within this radius
   void validate() const;
 };
 

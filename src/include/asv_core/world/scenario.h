@@ -24,9 +24,20 @@ public:
 };
 
 // NonCompliant: a give-way ship that stands on; PortTurn: a give-way ship that alters to port (the
-// classic error of Rules 14/15). Both are the rule-breakers of generated traffic. Track: a recorded
-// track replayed in time (real traffic from an AIS log), whatever happens round the ship.
-enum class Behaviour : uint8_t { Constant, Waypoints, GiveWay, NonCompliant, PortTurn, Planner, Track };
+// classic error of Rules 14/15). Both are the rule-breakers of generated traffic. LateGiveWay: a
+// give-way ship that acts late and little (a small turn to starboard when the CPA is minutes away), not
+// the substantial early action of Rule 16. Track: a recorded track replayed in time (real traffic from
+// an AIS log), whatever happens round the ship.
+enum class Behaviour : uint8_t {
+  Constant,
+  Waypoints,
+  GiveWay,
+  NonCompliant,
+  PortTurn,
+  LateGiveWay,
+  Planner,
+  Track
+};
 const char* toString(Behaviour b);
 
 // One point of a recorded track: where the ship was at time t of the scenario.
