@@ -101,6 +101,68 @@ TEST(PlanFollower, StandingOnDoesNotReplanForTheShipStoodOnFor) {
   EXPECT_NEAR(passesWithin(why), 0.0, 50.0) << why;
 }
 
+namespace {
+
+// A slow ship the own ship overtakes: 1000 m east of her track, `ahead` metres ahead, north at 2 m/s;
+// the own ship (north at 6 m/s) closes on it at 4 m/s, so its TCPA is ahead / 4 s.
+asv::PlannerTarget overtaken(double ahead) {
+  asv::PlannerTarget t;
+  t.state.id = "ts2";
+  t.state.position = {1000.0, ahead};
+  t.state.course = t.state.heading = 0.0;
+  t.state.speed = 2.0;
+  t.encounter = asv::Encounter::Overtaking;
+  t.role = asv::OwnRole::GiveWay;
+  t.risk = asv::RiskLevel::Collision;
+  t.tcpa = ahead / 4.0;
+  t.dcpa = 1000.0;
+  return t;
+}
+
+}  // namespace
+
+// Rule 17 with several ships: she stands on for ts1 (from port, compliant; both reach (0, 5000) at
+// 833 s); her duty to keep out of the way of ts2, which she overtakes, waits while its CPA is more than
+// duty_window_s (900 s) away: 4000 m ahead, 1000 s. ts2 is then watched as a ship she stands on for, not
+// planned against, and the plan may hold her course. At 3200 m (800 s) the duty is due: ts2 is planned
+// against, and a plan made while it waited is replaced at once. Without a ship she stands on for, or
+// with ts1 past, the duty never waits. With ts1's CPA 300 s away, ts2's at 3400 m (850 s) comes more
+// than kDutyLead (480 s) after it and waits too: she can stand on and still act early; urgent, never.
+TEST(PlanFollower, ARemoteGiveWayDutyWaitsWhileSheStandsOn) {
+  const asv::PlanFollower f = follower();
+  asv::PlannerTarget ts1 = standOnTarget(true, asv::RiskLevel::Collision);
+  ts1.tcpa = 5000.0 / 6.0;
+  const asv::PlanningProblem waiting = f.buildProblem(0.0, {ts1, overtaken(4000.0)});
+  EXPECT_TRUE(waiting.targets.empty());
+  ASSERT_EQ(waiting.stand_on_for.size(), 2u);
+  EXPECT_EQ(waiting.stand_on_for[1].state.id, "ts2");
+  const asv::PlanningProblem due = f.buildProblem(0.0, {ts1, overtaken(3200.0)});
+  ASSERT_EQ(due.targets.size(), 1u);
+  EXPECT_EQ(due.targets[0].state.id, "ts2");
+  EXPECT_EQ(f.buildProblem(0.0, {overtaken(4000.0)}).targets.size(), 1u);
+  EXPECT_EQ(follower(false).buildProblem(0.0, {ts1, overtaken(4000.0)}).targets.size(), 2u);
+  asv::PlannerTarget past = ts1;
+  past.tcpa = -10.0;
+  EXPECT_EQ(f.buildProblem(0.0, {past, overtaken(4000.0)}).targets.size(), 1u);
+  asv::PlannerTarget soon = ts1;
+  soon.tcpa = 300.0;
+  EXPECT_TRUE(f.buildProblem(0.0, {soon, overtaken(3400.0)}).targets.empty());
+  EXPECT_EQ(f.buildProblem(0.0, {ts1, overtaken(3400.0)}).targets.size(), 1u);  // 850 < 833 + 480
+  asv::PlannerTarget urgent = overtaken(4000.0);
+  urgent.risk = asv::RiskLevel::Urgent;
+  EXPECT_EQ(f.buildProblem(0.0, {ts1, urgent}).targets.size(), 1u);
+
+  asv::PlanFollower g = follower();
+  asv::Plan hold;
+  hold.status = asv::PlanStatus::Ok;
+  hold.waypoints = {{{0.0, 0.0}, 0.0, 0.0, 6.0}, {{0.0, 20000.0}, 3333.0, 0.0, 6.0}};
+  g.acceptPlan(hold, 0.0, {ts1, overtaken(4000.0)}, "test");
+  std::string why;
+  EXPECT_FALSE(g.replanNeeded(10.0, {ts1, overtaken(3960.0)}, why)) << why;
+  EXPECT_TRUE(g.replanNeeded(30.0, {ts1, overtaken(3560.0)}, why));
+  EXPECT_EQ(why, "the duty to keep out of the way of ts2 is due");
+}
+
 TEST(PlanFollower, PassesTheMinimumSeparationToThePlanners) {
   EXPECT_DOUBLE_EQ(follower().buildProblem(0.0, {}).min_separation, 926.0);
 }

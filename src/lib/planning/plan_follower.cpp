@@ -57,6 +57,7 @@ void PlanFollowerConfig::validate() const {
   require(prediction_horizon > 0, "prediction_horizon must be > 0 s");
   require(min_separation >= 0 && risk_clear_time >= 0, "min_separation and risk_clear_time must be >= 0");
   require(degraded_plan_hold >= 0, "degraded_plan_hold must be >= 0 s");
+  require(duty_window_s >= 0, "duty_window_s must be >= 0 s");
   require(min_obstacle_clearance_m >= 0, "min_obstacle_clearance_m must be >= 0 m");
   require(narrow_fairway_width_m >= 0, "narrow_fairway_width_m must be >= 0 m");
   require(limits.max_speed > 0 && limits.min_speed >= 0 && limits.min_speed <= limits.max_speed,
@@ -78,6 +79,7 @@ PlanFollowerConfig PlanFollowerConfig::fromParams(const ParamMap& p) {
   c.seed = p.getInt("seed", c.seed);
   c.min_separation = p.getDouble("min_separation", c.min_separation);
   c.stand_on_policy = p.getBool("stand_on_policy", c.stand_on_policy);
+  c.duty_window_s = p.getDouble("duty_window_s", c.duty_window_s);
   c.replan_on_risk = p.getBool("replan_on_risk", c.replan_on_risk);
   c.risk_clear_time = p.getDouble("risk_clear_time", c.risk_clear_time);
   c.restricted_passing = p.getBool("restricted_passing", c.restricted_passing);
@@ -531,7 +533,7 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   for (const auto& t : targets) {
     if (t.state.id == own_->id || !t.state.finite())
       continue;
-    if (standsOnFor(t)) {
+    if (standsOnFor(t) || dutyWaits(t, targets)) {
       pr.stand_on_for.push_back(t);
       continue;
     }
@@ -543,6 +545,14 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
 bool PlanFollower::standsOnFor(const PlannerTarget& t) const {
   // The give-way ship is expected to act while Hu's compliance flag holds.
   return cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent;
+}
+
+bool PlanFollower::dutyWaits(const PlannerTarget& t, const std::vector<PlannerTarget>& all) const {
+  if (!cfg_.stand_on_policy || !keepsOutOfTheWay(t) || t.risk == RiskLevel::Urgent)
+    return false;
+  return std::any_of(all.begin(), all.end(), [&](const PlannerTarget& o) {
+    return standsOnFor(o) && o.tcpa > 0.0 && (t.tcpa > cfg_.duty_window_s || t.tcpa > o.tcpa + kDutyLead);
+  });
 }
 
 Plan PlanFollower::fallback(const std::vector<PlannerTarget>& targets, const std::string& why,
@@ -699,6 +709,9 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
     leg_changed_ = false;
     return why = "route: waypoint passed, next leg", true;
   }
+  for (const auto& t : targets)
+    if (waiting_duties_.count(t.state.id) != 0 && !dutyWaits(t, targets))
+      return why = "the duty to keep out of the way of " + t.state.id + " is due", true;
   for (const auto& t : targets) {
     auto it = known_levels_.find(t.state.id);
     if (t.risk == RiskLevel::None) {
@@ -741,7 +754,7 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
   // compliance flag falls or its risk turns urgent, and it counts here again.
   std::vector<PlannerTarget> watched;
   std::copy_if(targets.begin(), targets.end(), std::back_inserter(watched),
-               [this](const PlannerTarget& t) { return !standsOnFor(t); });
+               [&](const PlannerTarget& t) { return !standsOnFor(t) && !dutyWaits(t, targets); });
   const double clearance = predictedClearance(watched);
   if (clearance < std::max(cfg_.plan_clearance, cfg_.min_separation)) {
     why = "plan predicted to pass within " + std::to_string(static_cast<int>(clearance)) + " m";
@@ -828,6 +841,10 @@ const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<Pl
   wp_index_ = 1;
   last_plan_time_ = now;
   ++replans_;
+  waiting_duties_.clear();
+  for (const auto& t : targets)
+    if (dutyWaits(t, targets))
+      waiting_duties_.insert(t.state.id);
   for (const auto& t : targets) {
     RiskLevel& known = known_levels_[t.state.id];
     if (static_cast<int>(t.risk) > static_cast<int>(known))

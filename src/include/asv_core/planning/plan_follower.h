@@ -22,6 +22,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,10 @@ struct PlanFollowerConfig {
   double min_separation = 0.0;         // [m] passing distance the planners must keep (0: their own)
   bool stand_on_policy = true;         // Rule 17(a)(i): a compliant give-way target below Hu's urgent
                                        // level is left out of the problem: the own ship stands on
+  // [s] Rule 17 with several ships: while she stands on for a ship, a duty to keep out of the way of
+  // another whose CPA is more than this away waits (dutyWaits). 15 min, the referee's duty_tcpa_s: a
+  // ship that far off is not yet in its own action window (our reading, docs/evaluation.md).
+  double duty_window_s = 900.0;
   // [m] every plan keeps the track this far from static obstacles (land); a ship already closer may not
   // halve her distance. 0.1 nm, as MOPSO's land clearance (Hu et al. 2017 Fig. 4(b)): our choice.
   double min_obstacle_clearance_m = 185.2;
@@ -161,6 +166,14 @@ public:
   // ship and the situation is not yet urgent (17(a)(ii), 17(b): then she acts). Such a ship is left out
   // of the problem, and out of the plan's predicted-clearance trigger.
   bool standsOnFor(const PlannerTarget& t) const;
+  // Rule 17 with several ships: while she stands on for some ship of `all` (standsOnFor) that is not yet
+  // past, her duty to keep out of the way of `t` (not urgent) waits while its CPA is more than
+  // duty_window_s away, or comes more than kDutyLead after that ship's: she keeps her course and speed
+  // for the first, and `t` is watched as a ship she stands on for (the plan may not close it) until the
+  // duty is due, which replans. Off with the stand-on policy.
+  // [s] 8 min, the referee's Rule 16 early_tcpa_s: with the stand-on ship past, she still acts early.
+  static constexpr double kDutyLead = 480.0;
+  bool dutyWaits(const PlannerTarget& t, const std::vector<PlannerTarget>& all) const;
   bool replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why);
   // Targets of a picture taken at `stamp`, moved on to `now` at their course and speed.
   static std::vector<PlannerTarget> deadReckon(std::vector<PlannerTarget> targets, double stamp, double now);
@@ -250,6 +263,7 @@ private:
   std::vector<StaticObstacle> obstacles_;
   std::optional<ShipState> own_;
   std::map<std::string, RiskLevel> known_levels_;
+  std::set<std::string> waiting_duties_;      // ships whose give-way duty waited at the last plan (dutyWaits)
   std::map<std::string, double> none_since_;  // when a known target's risk was last seen falling to none
   Plan plan_;
   bool have_plan_ = false;
