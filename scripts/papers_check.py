@@ -7,7 +7,10 @@ Checks:
              10/20: 0.272-0.728) and that a comparison is two-sided: 20/20 against the paper's 1/20 is
              outside, as is 10.0 against 5.0 +-2, while 20/20 against 17/20 is within;
   rows       a full run (every paper, about 30 s on 2 cores) writes summary.json rows with exactly the
-             keys paper, experiment, metric, paper_value, ours, tolerance, within, for all four papers;
+             keys paper, experiment, metric, paper_value, ours, tolerance, within, kind, for all four
+             papers; every kind is reproduced, calibration or self_check, and the rows that compare
+             with our own numbers (Hu et al.'s closest approaches against our d_min, the flag time from
+             our geometry, Fig. 6's inferred side) are self_check;
   claims     the rows the results pages say we reproduce are within tolerance: Hu et al. Fig. 4(a)/(b)
              sides and Fig. 6 (flag at 300 s by hand, no alteration before it, evasion at once),
              Hirayama et al. Table 3 DSSA and Table 2 DSSA+ s=c success counts, Lazarowska Scenario 1's
@@ -30,7 +33,15 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from paperlib import common  # noqa: E402
 
-KEYS = ["paper", "experiment", "metric", "paper_value", "ours", "tolerance", "within"]
+KEYS = ["paper", "experiment", "metric", "paper_value", "ours", "tolerance", "within", "kind"]
+# Rows that compare with our own numbers, not the paper's: they must say so (kind self_check).
+SELF_CHECKS = [
+    ("Hu et al. 2017", "Fig. 4(a) overtaking, open water", "closest approach [m] (design DCPA d_min)"),
+    ("Hu et al. 2017", "Fig. 4(b) overtaking, land to starboard", "closest approach [m] (design DCPA d_min)"),
+    ("Hu et al. 2017", "Fig. 6 non-compliant give-way target", "closest approach [m] (design DCPA d_min)"),
+    ("Hu et al. 2017", "Fig. 6 non-compliant give-way target", "flag time [s] (Algorithm 1, by hand)"),
+    ("Hu et al. 2017", "Fig. 6 non-compliant give-way target", "avoiding alterations, sides in order"),
+]
 CLAIMS = [
     ("Hu et al. 2017", "Fig. 4(a) overtaking, open water", "avoiding alterations, sides in order"),
     ("Hu et al. 2017", "Fig. 4(b) overtaking, land to starboard", "avoiding alterations, sides in order"),
@@ -87,6 +98,13 @@ def check_run(tmp, report):
             report("row keys %s, expected %s" % (list(r.keys()), KEYS))
             break
     index = {(r["paper"], r["experiment"], r["metric"]): r for r in rows}
+    for r in rows:
+        if r.get("kind") not in common.KINDS:
+            report("row kind %r is not one of %s: %s" % (r.get("kind"), common.KINDS, json.dumps(r)))
+            break
+    for c in SELF_CHECKS:
+        if c in index and index[c]["kind"] != "self_check":
+            report("a comparison with our own number is labelled %s: %s" % (index[c]["kind"], c))
     for c in CLAIMS:
         r = index.get(c)
         if r is None:

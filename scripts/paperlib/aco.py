@@ -74,8 +74,9 @@ def report(done):
             o = ours[k] if k < len(ours) else None
             rows.append(exact_row(PAPER, label, "alteration %d side" % (k + 1), side(a), side(o) if o is not None else None))
             rows.append(band_row(PAPER, label, "alteration %d [deg, + starboard]" % (k + 1), a, o, ANGLE_BAND, "deg"))
+        # Hull contact, not the hexagon entry the paper's claim is about: our check, not its number.
         rows.append(exact_row(PAPER, label, "closest approach outside the hexagon domain (no collision)", True,
-                              not r["collision"]))
+                              not r["collision"], kind="self_check"))
     lines += ["", "### Repeatability over independent seeds (paper mode)", "",
               "The paper ran each scenario 100 times and got the same answer every time. Here seeds 1..%d, each "
               "a different random colony; a route is the list of alterations to the degree and their times to "

@@ -99,34 +99,58 @@ def clopper_pearson(k, n, confidence=0.95):
     return lower, upper
 
 
-def row(paper, experiment, metric, paper_value, ours, tolerance, within):
+# What a row's "paper" value is: a number the paper prints and nothing was fitted to (reproduced), one we
+# fitted an unstated value of ours to (calibration), or not the paper's at all: a value of our own
+# geometry or parameters, or one the text leaves to inference (self_check). Only reproduced rows count
+# as reproduced.
+KINDS = ("reproduced", "calibration", "self_check")
+
+
+def row(paper, experiment, metric, paper_value, ours, tolerance, within, kind="reproduced"):
+    if kind not in KINDS:
+        raise ValueError("row kind %r is not one of %s" % (kind, KINDS))
     return {"paper": paper, "experiment": experiment, "metric": metric, "paper_value": paper_value,
-            "ours": ours, "tolerance": tolerance, "within": bool(within)}
+            "ours": ours, "tolerance": tolerance, "within": bool(within), "kind": kind}
 
 
-def count_row(paper, experiment, metric, k_paper, n_paper, k_ours, n_ours):
+def count_row(paper, experiment, metric, k_paper, n_paper, k_ours, n_ours, kind="reproduced"):
     """A success count: within when the paper's proportion lies in the 95 % Clopper-Pearson interval of ours."""
     lo, hi = clopper_pearson(k_ours, n_ours)
     p = k_paper / n_paper
     return row(paper, experiment, metric, "%d/%d" % (k_paper, n_paper), "%d/%d" % (k_ours, n_ours),
-               "binomial 95 %%: %.2f-%.2f" % (lo, hi), lo - 1e-12 <= p <= hi + 1e-12)
+               "binomial 95 %%: %.2f-%.2f" % (lo, hi), lo - 1e-12 <= p <= hi + 1e-12, kind)
 
 
-def band_row(paper, experiment, metric, paper_value, ours, band, unit="", relative=False):
+def band_row(paper, experiment, metric, paper_value, ours, band, unit="", relative=False, kind="reproduced"):
     """A number within +-band of the paper's (band a fraction of the paper's value when relative)."""
     if ours is None or (isinstance(ours, float) and not math.isfinite(ours)):
-        return row(paper, experiment, metric, paper_value, None, _band_text(band, unit, relative), False)
+        return row(paper, experiment, metric, paper_value, None, _band_text(band, unit, relative), False, kind)
     width = band * abs(paper_value) if relative else band
     return row(paper, experiment, metric, paper_value, round(ours, 3), _band_text(band, unit, relative),
-               abs(ours - paper_value) <= width + 1e-9)
+               abs(ours - paper_value) <= width + 1e-9, kind)
 
 
 def _band_text(band, unit, relative):
     return "+-%g %%" % (100 * band) if relative else "+-%g%s" % (band, (" " + unit) if unit else "")
 
 
-def exact_row(paper, experiment, metric, paper_value, ours):
-    return row(paper, experiment, metric, paper_value, ours, "exact", paper_value == ours)
+def exact_row(paper, experiment, metric, paper_value, ours, kind="reproduced"):
+    return row(paper, experiment, metric, paper_value, ours, "exact", paper_value == ours, kind)
+
+
+def tally(rows):
+    """{kind: (within, rows)} of a paper's rows."""
+    return {k: (sum(r["within"] for r in rows if r["kind"] == k), sum(r["kind"] == k for r in rows)) for k in KINDS}
+
+
+def tally_text(rows):
+    """The pages' and the log's count: reproduced rows first, then the others apart."""
+    t = tally(rows)
+    text = "%d of %d reproduced rows within tolerance" % t["reproduced"]
+    for k, name in (("calibration", "calibration"), ("self_check", "self-check")):
+        if t[k][1]:
+            text += "; %d of %d %s rows" % (t[k][0], t[k][1], name)
+    return text
 
 
 def side(change_deg):
@@ -149,12 +173,13 @@ def fmt(v):
 def rows_table(rows, reasons=None):
     """Markdown table of rows; `reasons` maps (experiment, metric) to why a row is outside tolerance."""
     reasons = reasons or {}
-    out = ["| experiment | metric | paper | ours | tolerance | within | why, when outside |",
-           "|---|---|---:|---:|---|---|---|"]
+    out = ["| experiment | metric | kind | paper | ours | tolerance | within | why, when outside |",
+           "|---|---|---|---:|---:|---|---|---|"]
     for r in rows:
         why = "" if r["within"] else reasons.get((r["experiment"], r["metric"]), reasons.get(r["experiment"], ""))
-        out.append("| %s | %s | %s | %s | %s | %s | %s |" % (r["experiment"], r["metric"], fmt(r["paper_value"]),
-                                                          fmt(r["ours"]), r["tolerance"], fmt(r["within"]), why))
+        out.append("| %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["experiment"], r["metric"], r["kind"].replace("_", "-"), fmt(r["paper_value"]), fmt(r["ours"]),
+            r["tolerance"], fmt(r["within"]), why))
     return out
 
 

@@ -407,6 +407,16 @@ TEST(MopsoPlanner, Rule17cKeepsStarboardForAShipOnThePortSide) {
   late.min_separation = 11000.0;
   const Plan extremis = planner.plan(late);
   EXPECT_EQ(planner.lastResult().pass, 2) << extremis.message;
+
+  // Paper mode is Hu et al. as printed: the first pass finding nothing, eq. (6) is relaxed (pass 2).
+  late.min_separation = 926.0;
+  MopsoConfig printed = MopsoConfig::paper();
+  printed.d_min_m = cfg.d_min_m;
+  printed.search_alteration_deg = cfg.search_alteration_deg;
+  EXPECT_FALSE(printed.rule17c_pass);
+  MopsoPlanner paper(printed);
+  const Plan relaxed = paper.plan(late);
+  EXPECT_EQ(paper.lastResult().pass, 2) << relaxed.message;
 }
 
 TEST(MopsoPlanner, MultiTargetPlanIsFeasible) {

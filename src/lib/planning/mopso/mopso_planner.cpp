@@ -67,6 +67,7 @@ void MopsoConfig::validate() const {
 MopsoConfig MopsoConfig::paper() {
   MopsoConfig c;
   c.inflate = false;
+  c.rule17c_pass = false;
   return c;
 }
 
@@ -91,6 +92,7 @@ MopsoConfig MopsoConfig::fromParams(const ParamMap& p) {
   c.t_max_s = p.getDouble("t_max_s", c.t_max_s);
   c.prefer_starboard = p.getBool("prefer_starboard", c.prefer_starboard);
   c.inflate = p.getBool("inflate", c.inflate);
+  c.rule17c_pass = p.getBool("rule17c_pass", c.rule17c_pass);
   c.land_clearance_m = p.getDouble("land_clearance_m", c.land_clearance_m);
   c.selection_margin_m = p.getDouble("selection_margin_m", c.selection_margin_m);
   c.min_speed_mps = p.getDouble("min_speed_mps", c.min_speed_mps);
@@ -800,7 +802,7 @@ Plan MopsoPlanner::plan(const PlanningProblem& problem) {
   last_.pass = 1;
   last_.pareto_front = optimise(ctx, cfg, problem.seed, deadline, last_);
   int idx = selectFromFront(last_.pareto_front, cfg);
-  if (idx < 0 && cfg.prefer_starboard) {
+  if (idx < 0 && cfg.prefer_starboard && cfg.rule17c_pass) {
     idx = rule17cStarboard(problem, rule, ctx, cfg, last_.pareto_front);
     if (idx >= 0)
       last_.pass = 3;

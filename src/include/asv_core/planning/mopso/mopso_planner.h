@@ -62,6 +62,10 @@ struct MopsoConfig {
   double t_max_s = 1800.0;  // [s] t_max of eq. (5); not given: 30 min, enough to open 1 nm at 15 deg
                             // and 8 kn, short enough to keep near the planned route
   bool prefer_starboard = true;  // impose eq. (6) in a first pass, relax it only if that finds nothing
+  // Sea-mode extension (not in the paper, which only relaxes eq. (6)): before the relaxed pass, against a
+  // Rule 2(b) target on the own port side, keep a starboard plan of the first pass that keeps the
+  // situation's minimum separation (pass 3, Rule 17(c)). Paper mode: false.
+  bool rule17c_pass = true;
   // Sea-mode extension (not in the paper): d_min of eq. (8) is raised to kSeparationMargin x the
   // situation's minimum separation (planning.h) when that is larger. Paper mode: false, d_min as set.
   bool inflate = true;
@@ -75,7 +79,7 @@ struct MopsoConfig {
                                // timed at OwnShipLimits::max_speed
 
   void validate() const;  // throws std::invalid_argument naming the bad field
-  // Hu et al. (2017) and nothing else: the sea-mode extensions above off (`inflate`).
+  // Hu et al. (2017) and nothing else: the sea-mode extensions above off (`inflate`, `rule17c_pass`).
   static MopsoConfig paper();
   // Reads the keys above and `mode` (sea | paper: which defaults the others start from); absent keys
   // keep the defaults; rejects unknown keys.
