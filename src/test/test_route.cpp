@@ -310,6 +310,40 @@ TEST(Route, FollowerCapsThePassingDistanceInRestrictedWaters) {
   EXPECT_EQ(paper.buildProblem(0.0, {}).min_separation, 0.0);  // paper mode: the paper's own
 }
 
+// The plan-clearance trigger judges a plan by the separation the planners were given: there, the cap.
+// A plan due north passes a ship lying 500 m east of the track at 500 m: more than the 292.8 m cap and
+// plan_clearance (370.4 m), so it is kept; for the sea-scale 926 m it would be replanned every cycle.
+// A ship 330 m off is inside plan_clearance: replanned.
+TEST(Route, TheReplanTriggerUsesTheCappedSeparation) {
+  const StaticObstacle pier{"pier", {{1000, -100}, {1100, -100}, {1100, 100}, {1000, 100}}, nullptr};
+  ShipState own;
+  own.id = "own";
+  own.length = 94.0;
+  own.speed = 10.0 * 1852.0 / 3600.0;
+  PlanFollowerConfig cfg;
+  cfg.cruise_speed = own.speed;
+  cfg.min_separation = 926.0;
+  PlanFollower f(cfg);
+  f.setObstacles({pier});
+  f.setGoal({0, 5000});
+  f.updateOwn(own);
+  EXPECT_NEAR(f.separationHere(), 292.8, 0.1);
+  Plan north;
+  north.status = PlanStatus::Ok;
+  north.waypoints = {{{0.0, 0.0}, 0.0, 0.0, own.speed}, {{0.0, 5000.0}, 5000.0 / own.speed, 0.0, own.speed}};
+  auto lying = [](double x) {
+    PlannerTarget t;
+    t.state.id = "ts1";
+    t.state.position = {x, 2000.0};
+    return t;
+  };
+  f.acceptPlan(north, 0.0, {lying(500.0)}, "test");
+  std::string why;
+  EXPECT_FALSE(f.replanNeeded(10.0, {lying(500.0)}, why)) << why;
+  EXPECT_TRUE(f.replanNeeded(10.0, {lying(330.0)}, why));
+  EXPECT_EQ(why.rfind("plan predicted to pass within 3", 0), 0u) << why;
+}
+
 namespace {
 
 const char* kGpx = R"(<?xml version="1.0" encoding="UTF-8"?>

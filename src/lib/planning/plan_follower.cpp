@@ -521,15 +521,10 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
     }
   pr.seed = static_cast<uint64_t>(cfg_.seed) + replans_;
   pr.time_budget = cfg_.time_budget;
-  pr.min_separation = cfg_.min_separation;
   pr.min_obstacle_clearance = cfg_.min_obstacle_clearance_m;
   pr.prediction_horizon = cfg_.prediction_horizon;
-  if (cfg_.restricted_passing) {
-    pr.passing_cap = restrictedPassingDistance(pr.own.position, pr.own.length, legSpeed(), obstacles_);
-    // The ship's own domain, not the situation's sea-scale minimum, is what she can keep here.
-    if (pr.passing_cap > 0.0 && pr.min_separation > pr.passing_cap)
-      pr.min_separation = pr.passing_cap;
-  }
+  pr.passing_cap = passingCap();
+  pr.min_separation = separationHere();
   for (const auto& t : targets) {
     if (t.state.id == own_->id || !t.state.finite())
       continue;
@@ -545,6 +540,18 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
 bool PlanFollower::standsOnFor(const PlannerTarget& t) const {
   // The give-way ship is expected to act while Hu's compliance flag holds.
   return cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent;
+}
+
+double PlanFollower::passingCap() const {
+  if (!cfg_.restricted_passing || !own_)
+    return 0.0;
+  return restrictedPassingDistance(own_->position, own_->length, legSpeed(), obstacles_);
+}
+
+double PlanFollower::separationHere() const {
+  const double cap = passingCap();
+  // The ship's own domain, not the situation's sea-scale minimum, is what she can keep here.
+  return cap > 0.0 ? std::min(cfg_.min_separation, cap) : cfg_.min_separation;
 }
 
 bool PlanFollower::dutyWaits(const PlannerTarget& t, const std::vector<PlannerTarget>& all) const {
@@ -756,7 +763,7 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
   std::copy_if(targets.begin(), targets.end(), std::back_inserter(watched),
                [&](const PlannerTarget& t) { return !standsOnFor(t) && !dutyWaits(t, targets); });
   const double clearance = predictedClearance(watched);
-  if (clearance < std::max(cfg_.plan_clearance, cfg_.min_separation)) {
+  if (clearance < std::max(cfg_.plan_clearance, separationHere())) {
     why = "plan predicted to pass within " + std::to_string(static_cast<int>(clearance)) + " m";
     return true;
   }
@@ -780,7 +787,7 @@ const Plan& PlanFollower::degrade(double now, const std::vector<PlannerTarget>& 
     return plan_;
   const bool keep =
       have_plan_ && plan_.status == PlanStatus::Ok && now - degraded_since_ <= cfg_.degraded_plan_hold &&
-      predictedClearance(last_known) >= std::max(cfg_.plan_clearance, cfg_.min_separation) && !landAhead();
+      predictedClearance(last_known) >= std::max(cfg_.plan_clearance, separationHere()) && !landAhead();
   if (keep)
     return plan_;
   // The course held is the one she had when the plan was given up, not wherever she drifts since.

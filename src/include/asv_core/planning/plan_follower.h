@@ -174,6 +174,13 @@ public:
   // [s] 8 min, the referee's Rule 16 early_tcpa_s: with the stand-on ship past, she still acts early.
   static constexpr double kDutyLead = 480.0;
   bool dutyWaits(const PlannerTarget& t, const std::vector<PlannerTarget>& all) const;
+  // Restricted waters (restricted_passing): the cap on the passing distance where she is
+  // (restrictedPassingDistance; 0 in open water, paper mode or before her state is known), and the
+  // minimum separation in force there: the situation's, at most that cap. The planners get both
+  // (buildProblem), and the plan-clearance trigger judges a plan by the same separation, so that a plan
+  // made for the cap is not replanned for the sea-scale minimum every cycle.
+  double passingCap() const;
+  double separationHere() const;
   bool replanNeeded(double now, const std::vector<PlannerTarget>& targets, std::string& why);
   // Targets of a picture taken at `stamp`, moved on to `now` at their course and speed.
   static std::vector<PlannerTarget> deadReckon(std::vector<PlannerTarget> targets, double stamp, double now);
