@@ -279,15 +279,26 @@ TEST(Route, ResultReportsTheRouteAndTheMasterFigures) {
   EXPECT_LT(json.find("wall_time_s"), json.find("\"human\""));
 }
 
-// Restricted waters (planning.h): land within 1 nm caps the planners' safety distances at the ship's
-// Kijima and Nakiri domain (94 m at 10 kn: 292.8 m to starboard, test_domain); open water and paper mode
-// leave them.
-TEST(Route, FollowerCapsThePassingDistanceInRestrictedWaters) {
-  const StaticObstacle pier{"pier", {{1000, -100}, {1100, -100}, {1100, 100}, {1000, 100}}, nullptr};
+namespace {
+
+// Restricted waters: a pier 1 km east of a 94 m ship at 10 kn at the origin.
+const StaticObstacle kPier{"pier", {{1000, -100}, {1100, -100}, {1100, 100}, {1000, 100}}, nullptr};
+ShipState ninetyFourMetres() {
   ShipState own;
   own.id = "own";
   own.length = 94.0;
   own.speed = 10.0 * 1852.0 / 3600.0;
+  return own;
+}
+
+}  // namespace
+
+// Restricted waters (planning.h): land within 1 nm caps the planners' safety distances at the ship's
+// Kijima and Nakiri domain (94 m at 10 kn: 292.8 m to starboard, test_domain); open water and paper mode
+// leave them.
+TEST(Route, FollowerCapsThePassingDistanceInRestrictedWaters) {
+  const StaticObstacle& pier = kPier;
+  const ShipState own = ninetyFourMetres();
   EXPECT_NEAR(restrictedPassingDistance(own.position, 94.0, own.speed, {pier}), 292.8, 0.1);
   EXPECT_EQ(restrictedPassingDistance({-900, 0}, 94.0, own.speed, {pier}), 0.0);  // 1900 m off: open water
   // A 19 m launch at 3 kn: 33 m by the domain (k_AD 1.84, k_DT 1.52), the 50 m floor.
@@ -315,11 +326,8 @@ TEST(Route, FollowerCapsThePassingDistanceInRestrictedWaters) {
 // plan_clearance (370.4 m), so it is kept; for the sea-scale 926 m it would be replanned every cycle.
 // A ship 330 m off is inside plan_clearance: replanned.
 TEST(Route, TheReplanTriggerUsesTheCappedSeparation) {
-  const StaticObstacle pier{"pier", {{1000, -100}, {1100, -100}, {1100, 100}, {1000, 100}}, nullptr};
-  ShipState own;
-  own.id = "own";
-  own.length = 94.0;
-  own.speed = 10.0 * 1852.0 / 3600.0;
+  const StaticObstacle& pier = kPier;
+  const ShipState own = ninetyFourMetres();
   PlanFollowerConfig cfg;
   cfg.cruise_speed = own.speed;
   cfg.min_separation = 926.0;
