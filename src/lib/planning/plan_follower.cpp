@@ -176,6 +176,12 @@ bool keepsWay(const Plan& plan, const PlanningProblem& problem) {
   return true;
 }
 
+// The minimum separation under a restricted-waters cap (0: none): the ship's own domain, not the
+// situation's sea-scale minimum, is what she can keep there.
+double cappedSeparation(double min_separation, double cap) {
+  return cap > 0.0 ? std::min(min_separation, cap) : min_separation;
+}
+
 // The own ship has to keep out of the way of a target (Rules 13-15: she overtakes it, meets it head-on or
 // it crosses from her starboard side).
 bool keepsOutOfTheWay(const PlannerTarget& t) {
@@ -524,7 +530,7 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   pr.min_obstacle_clearance = cfg_.min_obstacle_clearance_m;
   pr.prediction_horizon = cfg_.prediction_horizon;
   pr.passing_cap = passingCap();
-  pr.min_separation = separationHere();
+  pr.min_separation = cappedSeparation(cfg_.min_separation, pr.passing_cap);
   for (const auto& t : targets) {
     if (t.state.id == own_->id || !t.state.finite())
       continue;
@@ -549,9 +555,7 @@ double PlanFollower::passingCap() const {
 }
 
 double PlanFollower::separationHere() const {
-  const double cap = passingCap();
-  // The ship's own domain, not the situation's sea-scale minimum, is what she can keep here.
-  return cap > 0.0 ? std::min(cfg_.min_separation, cap) : cfg_.min_separation;
+  return cappedSeparation(cfg_.min_separation, passingCap());
 }
 
 bool PlanFollower::dutyWaits(const PlannerTarget& t, const std::vector<PlannerTarget>& all) const {
