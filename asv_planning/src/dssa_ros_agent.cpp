@@ -220,11 +220,16 @@ void DssaRosAgent::searchPhase(uint32_t phase, double step_end) {
 
   agent_.setOwn(s, goal, t_state);
   if (opt_.has_goal && (goal - s.position).norm() <= ex_.arrival_radius) {
-    // Arrived: leave the exchange (the others forget this ship) and steer straight for the goal.
-    publishIntention(agent_.intention(), phase, true, true);
+    // Arrived: leave the exchange (the others forget this ship), or stay in it as a stopped ship, and steer
+    // straight for the goal (the simulator stops her there).
+    if (opt_.stays_at_goal)
+      publishIntention(asv::dssaStationaryShip(agent_.id(), s.position, s.course, t_state), phase, true,
+                       false);
+    else
+      publishIntention(agent_.intention(), phase, true, true);
     if (!left_)
-      ROS_INFO("planner_node: '%s' is within %.0f m of its goal: leaves the exchange", opt_.ship.c_str(),
-               ex_.arrival_radius);
+      ROS_INFO("planner_node: '%s' is within %.0f m of its goal: %s", opt_.ship.c_str(), ex_.arrival_radius,
+               opt_.stays_at_goal ? "stays there, a stopped ship to the others" : "leaves the exchange");
     left_ = true;
     publishCommand(asv::courseOf(goal - s.position), opt_.cruise_speed > 0.0 ? opt_.cruise_speed : s.speed,
                    0.0, 0, true);

@@ -112,7 +112,7 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle pnh, const asv::Par
     dssa_ = std::make_unique<DssaRosAgent>(
         nh_, pnh_, DssaRosAgent::configOf(*plugin_),
         DssaRosOptions{p.ship, p.frame_id, p.has_goal, p.goal, f.cruise_speed, f.limits.min_speed,
-                       f.limits.max_speed, f.seed, scenario_goal_radius_});
+                       f.limits.max_speed, f.seed, scenario_goal_radius_, scenario_stays_at_goal_});
     lockstep_.start();  // the distributed agents keep their own timing (agents.launch, not lockstep)
     return;
   }
@@ -158,6 +158,7 @@ void PlannerNode::applyScenario() {
     p.follower.min_obstacle_clearance_m = sc.min_obstacle_clearance;  // the waters' own (a port)
   scenario_planner_ = ship->planner;
   scenario_goal_radius_ = ship->goal_radius;
+  scenario_stays_at_goal_ = ship->stays_at_goal;
   if (p.planner.empty())
     p.planner = ship->planner;
 }

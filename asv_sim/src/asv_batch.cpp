@@ -270,7 +270,7 @@ std::vector<asv::PlannerTarget> plannerTargets(const asv::Simulation& sim, size_
   const asv::ShipState own = vs[self].shipState();
   std::vector<asv::ShipState> others;
   for (size_t j = 0; j < vs.size(); ++j)
-    if (j != self && !vs[j].arrived)
+    if (j != self && vs[j].present())
       others.push_back(vs[j].shipState());
   const std::vector<asv::TargetRisk> rs = risk.assessAll(own, others);
   std::vector<asv::PlannerTarget> out;
@@ -303,6 +303,7 @@ private:
   void sample();
   void planPluginShip(PluginShip& ps, double now);
   void dssaPhase(double now);
+  void arrivedNeighbour(asv::DssaAgent& agent, int id, double now) const;
 
   const std::chrono::steady_clock::time_point wall0_ = std::chrono::steady_clock::now();
   const Options& o_;
@@ -479,7 +480,7 @@ void BatchRun::sample() {
     s.name = v.name;
     s.state = v.shipState();
     s.course_setpoint = v.course_sp;
-    s.active = !v.arrived;
+    s.active = v.present();
     s.beam = v.beam;
     ss.push_back(std::move(s));
   }
@@ -508,6 +509,19 @@ void BatchRun::planPluginShip(PluginShip& ps, double now) {
   }
 }
 
+// What an agent knows of a ship of the group that has arrived: nothing when she left the scenario; when
+// she stays at her goal, a stationary ship there (she no longer searches, so she sends no intention).
+void BatchRun::arrivedNeighbour(asv::DssaAgent& agent, int id, double now) const {
+  const asv::SimVessel& v = sim_.vessels()[static_cast<size_t>(id)];
+  if (!v.arrived)
+    return;
+  if (!v.stays_at_goal) {
+    agent.forget(id);
+    return;
+  }
+  agent.receive(asv::dssaStationaryShip(id, v.position(), v.shipState().course, now));
+}
+
 // One DSSA search phase (Hirayama et al. 2019, Fig. 1): every ship still under way takes part, then
 // steers its intention.
 void BatchRun::dssaPhase(double now) {
@@ -518,8 +532,7 @@ void BatchRun::dssaPhase(double now) {
   for (size_t a = 0; a < agents_.size(); ++a) {
     const asv::SimVessel& v = vs[static_cast<size_t>(agents_[a].id())];
     for (size_t b = 0; b < agents_.size(); ++b)
-      if (vs[static_cast<size_t>(agents_[b].id())].arrived)
-        agents_[a].forget(agents_[b].id());
+      arrivedNeighbour(agents_[a], agents_[b].id(), now);
     if (v.arrived)
       continue;
     agents_[a].setOwn(v.shipState(), agent_goals_[a], now);

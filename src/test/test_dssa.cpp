@@ -387,6 +387,27 @@ TEST(DssaConfig, ShipSpeedsFromTheConfigAndTheHostLimits) {
   EXPECT_THROW(DssaConfig::fromParams(p), std::invalid_argument);
 }
 
+TEST(DssaConfig, MinSpeedIsAFractionOfTheReferenceSpeed) {
+  // The experiments' MinSPD = RefSPD / 2: 12.5 for the 25 (above the 10 it must overtake, Sec. 5.3),
+  // 5 for the 10, 2.5 for the 5; never below the host's own limit.
+  ParamMap p;
+  p.set("preset", "dssa_plus");
+  p.set("min_speed_fraction", 0.5);
+  p.set("max_speed_over_ref", 8.0);
+  const DssaConfig c = DssaConfig::fromParams(p);
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 25.0, 0.0, 10.0).min, 12.5);
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 10.0, 0.0, 10.0).min, 5.0);
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 5.0, 0.0, 10.0).min, 2.5);
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(c, 25.0, 15.0, 10.0).min, 15.0);
+  EXPECT_DOUBLE_EQ(dssaShipSpeeds(DssaConfig{}, 25.0, 0.0, 30.0).min, 0.0) << "default: the host's limit";
+  // A ship at MinSPD cannot slow further: -8 from 14 is clamped to 12.5 (Sec. 4's clamp).
+  DssaAgent a(0, c, dssaShipSpeeds(c, 25.0, 0.0, 10.0));
+  a.setOwn(shipAt(0, 0, 0, 14), {0, 10000});
+  EXPECT_NEAR(a.inefficiency(0, -8.0), 1.0 * (25.0 - 12.5) / 33.0, 1e-12);  // beta 1 (dssa_plus), MaxSPD 33
+  p.set("min_speed_fraction", 1.5);
+  EXPECT_THROW(DssaConfig::fromParams(p), std::invalid_argument);
+}
+
 TEST(DssaPlanner, AvoidsAConstantVelocityTargetDeterministically) {
   DssaPlanner planner("dssa_plus");
   EXPECT_EQ(planner.name(), "dssa_plus");

@@ -127,6 +127,20 @@ TEST(Scenario, GoalRadiusNeedsAGoalAndAPositiveValue) {
               "needs a goal");
 }
 
+TEST(Scenario, StaysAtGoalIsABooleanThatNeedsAGoal) {
+  const Scenario sc =
+      parseScenario(replace(kGood, "  planner: aco\n", "  planner: aco\n  stays_at_goal: true\n"));
+  EXPECT_TRUE(sc.own.stays_at_goal);
+  EXPECT_FALSE(sc.targets[2].stays_at_goal);  // not given: an arrived ship leaves the scenario
+  EXPECT_FALSE(parseScenario(replace(kGood, "  planner: aco\n", "  planner: aco\n  stays_at_goal: false\n"))
+                   .own.stays_at_goal);
+  expectError(replace(kGood, "  planner: aco\n", "  planner: aco\n  stays_at_goal: yes\n"),
+              "must be true or false");
+  expectError(
+      replace(kGood, "    behaviour: constant\n", "    behaviour: constant\n    stays_at_goal: true\n"),
+      "needs a goal");
+}
+
 TEST(Scenario, OverlappingShipsAreAnError) {
   expectError(replace(kGood, "position: {x_m: 3000, y_m: 3000}", "position: {x_m: 3, y_m: 3}"),
               "starts overlapping 'own'");

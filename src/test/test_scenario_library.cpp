@@ -217,6 +217,7 @@ TEST(ScenarioLibrary, Dssa) {
       expectNear(*ship.goal, c.goal, kPosTol, "goal");
       EXPECT_NEAR(ship.speed, c.speeds.ref, kSpeedTol);
       EXPECT_LE(angleDiff(ship.course, trueBearing(c.start, c.goal)), kAngTol);
+      EXPECT_TRUE(ship.stays_at_goal) << "Fig. 1: an arrived ship stays where she stopped";
     }
     // The paper's units, not the plugin's sea-scale defaults.
     ParamMap p = s.planner_params.sub("dssa_plus");
@@ -226,7 +227,9 @@ TEST(ScenarioLibrary, Dssa) {
     EXPECT_DOUBLE_EQ(cfg.time_window, paper.time_window);
     EXPECT_DOUBLE_EQ(cfg.time_step, paper.time_step);
     EXPECT_DOUBLE_EQ(cfg.detection_range, paper.detection_range);
-    EXPECT_DOUBLE_EQ(cfg.collision_distance, 40.0);
+    EXPECT_DOUBLE_EQ(cfg.collision_distance, paper.collision_distance);
+    EXPECT_DOUBLE_EQ(cfg.min_speed_fraction, kDssaPaperMinSpeedFraction);
+    EXPECT_DOUBLE_EQ(cfg.max_speed_over_ref, 8.0);
     EXPECT_DOUBLE_EQ(cfg.speed_change_max, paper.speed_change_max);
     EXPECT_DOUBLE_EQ(cfg.speed_change_step, paper.speed_change_step);
   }

@@ -188,6 +188,34 @@ TEST(Simulation, ArrivalIsJudgedAlongTheStepSoAFastShipCannotStepOverItsGoal) {
   EXPECT_TRUE(sim2.own().arrived);
 }
 
+TEST(Simulation, AShipThatStaysAtHerGoalIsStillThereAndRefereed) {
+  // Target a sails north 200 m to her goal and stops at t = 40 s; the own ship, 5 m/s north from 500 m
+  // behind (500 m apart until then), reaches that spot at t = 140 s. Staying, a is a stationary ship the own
+  // ship runs into; leaving (the default), a is gone on arrival and nothing is refereed against her after it.
+  const std::string a =
+      "  - {name: a, model: point, position: {x_m: 0, y_m: 500}, course_deg: 0, speed_mps: 5,"
+      " behaviour: planner, planner: dssa_plus, goal: {x_m: 0, y_m: 700}, goal_radius_m: 1%s}\n";
+  for (const bool stays : {true, false}) {
+    SCOPED_TRACE(stays ? "stays" : "leaves");
+    char buf[512];
+    std::snprintf(buf, sizeof buf, a.c_str(), stays ? ", stays_at_goal: true" : "");
+    Simulation sim(parseScenario(scenarioYaml(buf)));
+    run(sim, 60.0);
+    const SimVessel& target = sim.vessels()[1];
+    ASSERT_TRUE(target.arrived);
+    EXPECT_NEAR(target.arrival_time, 40.0, 0.2);
+    EXPECT_EQ(target.present(), stays);
+    EXPECT_NEAR(target.position().y(), 700.0, 1.0);
+    run(sim, 120.0);
+    EXPECT_NEAR(target.position().y(), 700.0, 1.0) << "an arrived ship stops";
+    EXPECT_EQ(sim.collided(), stays);
+    if (stays)
+      EXPECT_LT(sim.minSeparationOwn(), 1.0);
+    else
+      EXPECT_NEAR(sim.minSeparationOwn(), 500.0, 1.0);  // the same speed until a arrived and left
+  }
+}
+
 TEST(Simulation, ThreeDofTargetFollowsASetpoint) {
   Simulation sim(parseScenario(scenarioYaml(
       "  - {name: b, model: wu_asv_40m, behaviour: planner, planner: ga, goal: {x_m: 5000, y_m: 5000},"

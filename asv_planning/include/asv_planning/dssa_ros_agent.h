@@ -75,6 +75,9 @@ struct DssaRosOptions {
   // [m] the scenario's arrival radius round the goal (goal_radius_m; 0: none given): where the ship
   // leaves the exchange unless ~exchange/arrival_radius is set, as the simulator counts her arrived there.
   double goal_radius = 0.0;
+  // The scenario's stays_at_goal: once arrived the ship stays in the exchange as a stopped ship (the others
+  // avoid her) instead of leaving it.
+  bool stays_at_goal = false;
 };
 
 // ~exchange/ parameters (config/dssa.yaml).

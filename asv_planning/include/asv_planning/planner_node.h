@@ -132,12 +132,13 @@ private:
   std::unique_ptr<DssaRosAgent>
       dssa_;                   // distributed DSSA/DSSA+ (~distributed): drives cmd instead of the plugin
   asv::ParamMap node_params_;  // ~ (a planner switch reads the new plugin's ~<planner>/)
-  asv::ParamMap scenario_planners_;     // the scenario's planner_params, all planners
-  std::string scenario_planner_;        // the scenario's planner for this ship ("" without scenario)
-  std::string mode_ = "sea";            // the plugin's mode in force (its key mode)
-  double scenario_min_separation_ = 0;  // [m] the scenario's (0: none)
-  double scenario_goal_radius_ = 0;     // [m] this ship's arrival radius in the scenario (0: none)
-  asv::Route scenario_route_;           // this ship's voyage plan in the scenario (unless goal_x/y given)
+  asv::ParamMap scenario_planners_;      // the scenario's planner_params, all planners
+  std::string scenario_planner_;         // the scenario's planner for this ship ("" without scenario)
+  std::string mode_ = "sea";             // the plugin's mode in force (its key mode)
+  double scenario_min_separation_ = 0;   // [m] the scenario's (0: none)
+  double scenario_goal_radius_ = 0;      // [m] this ship's arrival radius in the scenario (0: none)
+  bool scenario_stays_at_goal_ = false;  // this ship stays at her goal once arrived (scenario)
+  asv::Route scenario_route_;            // this ship's voyage plan in the scenario (unless goal_x/y given)
   std::unique_ptr<dynamic_reconfigure::Server<PlannerConfig>> live_;
   bool live_started_ = false;
 };

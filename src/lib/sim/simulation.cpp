@@ -117,6 +117,7 @@ Simulation::Simulation(const Scenario& scenario, const SimConfig& config)
     v.speed_sp = v.cruise_speed = s.speed;
     v.goal = s.goal;
     v.goal_radius = s.goal_radius;
+    v.stays_at_goal = s.stays_at_goal;
     v.step_from = s.position;
     v.waypoints = s.waypoints;
     v.route = s.route;
@@ -211,7 +212,7 @@ void Simulation::giveWayLogic(SimVessel& v, size_t index) {
     return;
   }
   for (size_t j = 0; j < vessels_.size(); ++j) {
-    if (j == index || vessels_[j].arrived)
+    if (j == index || !vessels_[j].present())
       continue;
     const ShipState other = vessels_[j].shipState();
     const Cpa cpa = computeCpa(me, other);
@@ -240,7 +241,7 @@ void Simulation::steer(SimVessel& v) {
     events_.push_back({SimEvent::Arrival, time_, v.name, "", (p - *v.goal).norm()});
   }
   if (v.arrived) {
-    v.speed_sp = 0.0;  // an arrived ship has left the scenario: it stops and is no longer refereed
+    v.speed_sp = 0.0;  // an arrived ship stops (and has left the scenario unless she stays_at_goal)
     return;
   }
   if (!v.waypoints.empty()) {
@@ -405,7 +406,7 @@ void Simulation::referee() {
   for (size_t i = 0; i < n; ++i) {
     for (size_t j = i + 1; j < n; ++j) {
       const SimVessel &a = vessels_[i], &b = vessels_[j];
-      if (a.arrived || b.arrived)
+      if (!a.present() || !b.present())
         continue;
       const double d = (a.position() - b.position()).norm();
       if (i == 0) {
@@ -530,7 +531,7 @@ void NmeaEmitter::emitAis(const Simulation& sim, std::vector<std::string>& out) 
   const auto& vs = sim.vessels();
   const double t = sim.time();
   for (size_t i = 1; i < vs.size(); ++i) {
-    if (vs[i].arrived)
+    if (!vs[i].present())
       continue;
     if (faulty(sim, vs[i], SensorFault::Type::AisSilence, t)) {
       next_static_[i] = std::max(next_static_[i], t);  // the first reports go out when she is back
@@ -643,7 +644,7 @@ void NmeaEmitter::emitRadar(const Simulation& sim, std::vector<std::string>& out
   const ShipState os = own.shipState();
   for (size_t i = 1; i < vs.size(); ++i) {
     const SimVessel& v = vs[i];
-    if (v.arrived)
+    if (!v.present())
       continue;
     const Eigen::Vector2d rel = v.position() - own.position();
     const double range = rel.norm();

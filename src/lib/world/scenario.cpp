@@ -258,10 +258,29 @@ void readRoute(const Ctx& c, const YAML::Node& n, const std::string& w, RawShip&
   }
 }
 
+// How the ship arrives: goal_radius_m and stays_at_goal, both only for a ship with a goal or a route.
+void readArrival(const Ctx& c, const YAML::Node& n, const std::string& w, ScenarioShip& s) {
+  if (n["goal_radius_m"]) {
+    if (!n["goal"] && !n["route"] && !n["route_file"])
+      c.fail(n["goal_radius_m"], w + "goal_radius_m", "needs a goal or a route");
+    s.goal_radius = c.number(n, "goal_radius_m", w);
+    if (!(s.goal_radius > 0.0) || s.goal_radius > 10000.0)
+      c.fail(n["goal_radius_m"], w + "goal_radius_m", "must be in (0, 10000] m");
+  }
+  if (n["stays_at_goal"]) {
+    if (!n["goal"] && !n["route"] && !n["route_file"])
+      c.fail(n["stays_at_goal"], w + "stays_at_goal", "needs a goal or a route");
+    const std::string v = c.text(n, "stays_at_goal", w);
+    if (v != "true" && v != "false")
+      c.fail(n["stays_at_goal"], w + "stays_at_goal", "must be true or false");
+    s.stays_at_goal = v == "true";
+  }
+}
+
 RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bool own) {
-  std::set<std::string> allowed{"name",   "mmsi",     "model",        "ais_class", "length_m",
-                                "beam_m", "position", "course_deg",   "speed_kn",  "speed_mps",
-                                "goal",   "planner",  "goal_radius_m"};
+  std::set<std::string> allowed{"name",   "mmsi",     "model",         "ais_class",    "length_m",
+                                "beam_m", "position", "course_deg",    "speed_kn",     "speed_mps",
+                                "goal",   "planner",  "goal_radius_m", "stays_at_goal"};
   if (own)
     allowed.insert({"route", "route_file"});
   else
@@ -316,13 +335,7 @@ RawShip readShip(const Ctx& c, const YAML::Node& n, const std::string& where, bo
     if (!r.route_file.empty() && r.route_file[0] != '/' && slash != std::string::npos)
       r.route_file = c.source().substr(0, slash + 1) + r.route_file;
   }
-  if (n["goal_radius_m"]) {
-    if (!n["goal"] && !n["route"] && !n["route_file"])
-      c.fail(n["goal_radius_m"], w + "goal_radius_m", "needs a goal or a route");
-    s.goal_radius = c.number(n, "goal_radius_m", w);
-    if (!(s.goal_radius > 0.0) || s.goal_radius > 10000.0)
-      c.fail(n["goal_radius_m"], w + "goal_radius_m", "must be in (0, 10000] m");
-  }
+  readArrival(c, n, w, s);
   if (n["planner"]) {
     s.planner = c.text(n, "planner", w);
     if (!validPlannerName(s.planner))

@@ -72,6 +72,8 @@ void writeShip(std::ostringstream& out, const ScenarioShip& s, bool own, const s
     out << i << "goal: " << point(*s.goal) << "\n";
   if (s.goal_radius > 0.0)
     out << i << strFormat("goal_radius_m: %.1f\n", s.goal_radius);
+  if (s.stays_at_goal)
+    out << i << "stays_at_goal: true\n";
   if (!s.planner.empty())
     out << i << "planner: " << s.planner << "\n";
   if (own)

@@ -23,6 +23,11 @@ struct DssaSimShip {
   DssaShipSpeeds speeds;  // RefSPD, MinSPD, MaxSPD [m/s]; the ship starts at RefSPD towards her goal
 };
 
+// MinSPD of the experiments' ships as a fraction of RefSPD (DssaConfig::min_speed_fraction; the
+// scenario files' planner_params say the same). The paper gives none but bounds it: Sec. 5.3's 25 cannot
+// avoid the 10 by slowing (> 0.4) and Table 2's s>c ships average 16.4 (< 0.65). Our choice: 0.5.
+constexpr double kDssaPaperMinSpeedFraction = 0.5;
+
 struct DssaScenario {
   std::string name;         // two_ships | sixteen_ships | three_ships
   std::string description;  // what the paper says and what we reconstructed
@@ -33,8 +38,10 @@ struct DssaScenario {
 struct DssaSimOptions {
   int max_steps = 400;  // time steps before a ship that has not arrived counts as a failure
   // [m] a ship arrives when her move of a time step passes this close to her goal. She then stops there
-  // and leaves the sea (the paper's ships stop taking part once at their goals, Sec. 3.1).
+  // and stays, a stationary ship the others avoid (Sec. 3.1: only a ship "who does not reach her goal"
+  // moves; Sec. 5.3 needs it), unless arrived_leave.
   double goal_tolerance = 1.0;
+  bool arrived_leave = false;  // true: an arrived ship leaves the sea (is no longer seen or refereed)
   // [m] two ships closer than this at any instant (moves are straight within a step, so the check is
   // exact) collide; <= 0: the planner's collision_distance, the same "collide" the cost uses.
   double collision_distance = 0.0;

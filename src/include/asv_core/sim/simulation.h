@@ -72,6 +72,7 @@ struct SimVessel {
   Eigen::Vector2d track_start = Eigen::Vector2d::Zero();  // [m] where the track starts (t = 0)
   Eigen::Vector2d step_from = Eigen::Vector2d::Zero();    // [m] position at the start of the last step
   bool arrived = false;
+  bool stays_at_goal = false;  // ScenarioShip::stays_at_goal: once arrived she stops and stays present
   double arrival_time = -1.0;
   bool giving_way = false;  // give_way behaviour: alteration in progress
   std::string giving_way_to;
@@ -82,6 +83,8 @@ struct SimVessel {
   Eigen::Vector2d position() const { return model->state().position(); }
   double cog() const { return model->courseOverGround(); }
   double sog() const { return model->speedOverGround(); }
+  // Still in the scenario (seen, refereed, an obstacle to the others): under way, or arrived and staying.
+  bool present() const { return !arrived || stays_at_goal; }
   ShipState shipState() const;
 };
 

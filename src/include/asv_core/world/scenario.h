@@ -58,7 +58,11 @@ struct ScenarioShip {
   double speed = 0.0;                                  // [m/s]
   std::optional<Eigen::Vector2d> goal;                 // [m] ENU
   double goal_radius = 0.0;  // [m] arrival radius round the goal; 0: the simulator's (max(200 m, 2 L))
-  std::string planner;       // plugin short name; empty: none
+  // Key stays_at_goal. false: on arrival the ship leaves the scenario (no longer seen or refereed);
+  // true: she stops there and stays, seen and refereed, a stationary obstacle (Hirayama et al. 2019's
+  // experiments, Fig. 1: only a ship "who does not reach her goal" moves).
+  bool stays_at_goal = false;
+  std::string planner;                        // plugin short name; empty: none
   Behaviour behaviour = Behaviour::Constant;  // targets only; the own ship plans (or steers for its goal)
   std::vector<Eigen::Vector2d> waypoints;     // [m] ENU, for Behaviour::Waypoints
   // Behaviour::Track: times strictly increasing; the ship sails in a straight line from `position`

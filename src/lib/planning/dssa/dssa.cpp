@@ -48,6 +48,8 @@ void DssaConfig::validate() const {
   require(std::isfinite(max_search_time), "max_search_time", "must be finite");
   require(std::isfinite(ref_speed), "ref_speed", "must be finite");
   require(std::isfinite(max_speed_over_ref), "max_speed_over_ref", "must be finite");
+  require(std::isfinite(min_speed_fraction) && min_speed_fraction >= 0.0 && min_speed_fraction <= 1.0,
+          "min_speed_fraction", "must be in [0, 1]");
 }
 
 DssaShipSpeeds dssaShipSpeeds(const DssaConfig& config, double cruise_speed, double min_limit,
@@ -61,8 +63,18 @@ DssaShipSpeeds dssaShipSpeeds(const DssaConfig& config, double cruise_speed, dou
     s.max = std::max(max_limit, 1e-6);
     s.ref = config.ref_speed > 0.0 ? config.ref_speed : (wanted > 0.1 ? std::min(wanted, s.max) : s.max);
   }
-  s.min = std::min(std::max(min_limit, 0.0), s.max);
+  s.min = std::min(std::max({min_limit, config.min_speed_fraction * s.ref, 0.0}), s.max);
   return s;
+}
+
+DssaIntention dssaStationaryShip(int id, const Eigen::Vector2d& position, double course, double now) {
+  DssaIntention m;
+  m.id = id;
+  m.stamp = now;
+  m.course = course;
+  m.position = position;
+  m.satisfied = true;
+  return m;
 }
 
 ParamMap DssaConfig::seaDefaults() {
@@ -98,6 +110,7 @@ DssaConfig DssaConfig::fromParams(const ParamMap& params) {
   c.max_search_time = params.getDouble("max_search_time", c.max_search_time);
   c.ref_speed = params.getDouble("ref_speed", c.ref_speed);
   c.max_speed_over_ref = params.getDouble("max_speed_over_ref", c.max_speed_over_ref);
+  c.min_speed_fraction = params.getDouble("min_speed_fraction", c.min_speed_fraction);
   params.rejectUnknown("dssa");
   c.validate();
   return c;

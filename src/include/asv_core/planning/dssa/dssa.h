@@ -59,7 +59,7 @@ struct DssaConfig {
   double detection_range = 500.0;
   // [m] "self will collide with j" (Sec. 3.2) when DCPA (appendix) is below this. The paper says only
   // "sufficiently small" (appendix). 40 (1.6 moves of the paper's ships, under half their 100 m lane
-  // spacing) is our choice after a sweep over 40 and 50, see docs/results/dssa.md.
+  // spacing) is our choice after a sweep over 40-50 against all three tables, see docs/results/dssa.md.
   double collision_distance = 40.0;
   // [s] floor of TCPA in CR = TimeWindow/TCPA: guards the division when a collision is imminent (CR is
   // then at most time_window / tcpa_floor). TCPA = 0 itself (the CPA is now, the ships separate
@@ -87,6 +87,11 @@ struct DssaConfig {
   // (the own ship's limits.max_speed, the ROS agent's max_speed, asv_batch's OwnShipLimits). The paper
   // gives no MaxSPD; its experiments here use 8 (one largest speed change above RefSPD). Default 0.
   double max_speed_over_ref = 0.0;
+  // [-] MinSPD (Sec. 4) = this x RefSPD when > 0 (never below the host's limit); 0: the host's limit.
+  // The paper gives no MinSPD but implies one above zero: Sec. 5.3 says speed changes alone cannot
+  // avoid collision when a 25 overtakes a 10 (so the 25's MinSPD exceeds 10), and Table 2's s>c ships
+  // average 16.4 (so it is below that). Its experiments here use kDssaPaperMinSpeedFraction. Default 0.
+  double min_speed_fraction = 0.0;
 
   // Throws std::invalid_argument naming the first bad field.
   void validate() const;
@@ -95,7 +100,7 @@ struct DssaConfig {
   // preset()), preset (applied first), speed_changes, alpha, beta, p,
   // time_window, time_step, detection_range, collision_distance, tcpa_floor, course_change_max_deg,
   // course_change_step_deg, speed_change_max, speed_change_step, max_rounds, max_search_time,
-  // ref_speed, max_speed_over_ref. Unknown keys are rejected; the result is validated.
+  // ref_speed, max_speed_over_ref, min_speed_fraction. Unknown keys are rejected; the result is validated.
   static DssaConfig fromParams(const ParamMap& params);
   // fromParams with `preset` as the preset unless the parameters name one: how a planner named
   // "dssa" or "dssa_plus" reads its parameters (DssaPlanner, and the ROS agents from the plugin's).
@@ -135,7 +140,7 @@ struct DssaShipSpeeds {
 // RefSPD = config.ref_speed when > 0, else the cruise speed (the speed the ship is planned at; the
 // maximum as RefSPD would make DSSA+ speed up in every encounter), else the limit; MaxSPD = RefSPD +
 // config.max_speed_over_ref when that is > 0, else max_limit (and RefSPD no more than it);
-// MinSPD = min_limit within [0, MaxSPD].
+// MinSPD = the larger of min_limit and config.min_speed_fraction x RefSPD, within [0, MaxSPD].
 DssaShipSpeeds dssaShipSpeeds(const DssaConfig& config, double cruise_speed, double min_limit,
                               double max_limit);
 
@@ -154,6 +159,11 @@ struct DssaIntention {
 
   Eigen::Vector2d intendedVelocity() const { return courseSpeedToVelocity(course, speed); }
 };
+
+// What the others know of a ship that reached her goal and stays there (Fig. 1: only a ship "who does
+// not reach her goal" moves): a stopped ship at `position` as of `now`, satisfied. She no longer
+// searches, so her host sends this for her at every search phase.
+DssaIntention dssaStationaryShip(int id, const Eigen::Vector2d& position, double course, double now);
 
 // One ship's half of Fig. 2. Not thread-safe; one agent per ship.
 class DssaAgent {
