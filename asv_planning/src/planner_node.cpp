@@ -49,7 +49,7 @@ asv::PlanFollowerConfig followerConfig(const asv::PlannerNodeConfig& p, bool loc
   asv::PlanFollowerConfig fc = p.follower;
   if (lockstep)
     fc.time_budget = p.lockstep_time_budget;
-  asv::applyPlannerMode(fc, asv::parsePlannerMode(mode, p.planner), plugin.plansOnce());
+  asv::applyPlannerMode(fc, asv::parsePlannerMode(mode, p.planner), plugin.plansOnce(), plugin.ownTrigger());
   return fc;
 }
 

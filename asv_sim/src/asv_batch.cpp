@@ -199,6 +199,17 @@ Options parseArgs(int argc, char** argv) {
   return o;
 }
 
+// What --follower names is what the run uses, whatever the planner's mode would set.
+void keepNamedFollowerKeys(asv::PlanFollowerConfig& fc, const asv::ParamMap& named) {
+  const asv::PlanFollowerConfig given = asv::PlanFollowerConfig::fromParams(named);
+  if (named.has("plan_clearance"))
+    fc.plan_clearance = given.plan_clearance;
+  if (named.has("extremis_range"))
+    fc.extremis_range = given.extremis_range;
+  if (named.has("fallback_speed_factor"))
+    fc.fallback_speed_factor = given.fallback_speed_factor;
+}
+
 bool isDssa(const std::string& p) {
   return p == "dssa" || p == "dssa_plus";
 }
@@ -371,7 +382,9 @@ void BatchRun::addPluginShips(asv_planning::PluginLoader& loader) {
     const asv::PlannerMode mode = asv::plannerMode(params, p);
     auto plugin = loader.load(p, params);
     // A method that plans once does so in paper mode, unless --follower names replan_on_risk itself.
-    asv::applyPlannerMode(fc, mode, plugin->plansOnce() && !o_.follower.has("replan_on_risk"));
+    asv::applyPlannerMode(fc, mode, plugin->plansOnce() && !o_.follower.has("replan_on_risk"),
+                          plugin->ownTrigger());
+    keepNamedFollowerKeys(fc, o_.follower);
     if (sc_.min_obstacle_clearance > 0.0)
       fc.min_obstacle_clearance_m = sc_.min_obstacle_clearance;  // the waters' own (a port)
     // The risk picture's CRI (--risk) uses the GA planner's own CRI scaling (Wu et al. 2022 eq. 1-12 as

@@ -47,15 +47,28 @@ asv::PlannerTarget headOnTarget(double x) {
   return t;
 }
 
+// A follower of config c for own(), bound 20 km north.
+asv::PlanFollower northbound(const asv::PlanFollowerConfig& c) {
+  asv::PlanFollower f(c);
+  f.setGoal({0.0, 20000.0});
+  f.updateOwn(own());
+  return f;
+}
+
 asv::PlanFollower follower(bool stand_on_policy = true, bool replan_on_risk = true) {
   asv::PlanFollowerConfig c;
   c.min_separation = 926.0;
   c.stand_on_policy = stand_on_policy;
   c.replan_on_risk = replan_on_risk;
-  asv::PlanFollower f(c);
-  f.setGoal({0.0, 20000.0});
-  f.updateOwn(own());
-  return f;
+  return northbound(c);
+}
+
+// An Ok plan straight to the goal, 20 km north at 6 m/s.
+asv::Plan straightNorth() {
+  asv::Plan p;
+  p.status = asv::PlanStatus::Ok;
+  p.waypoints = {{{0.0, 0.0}, 0.0, 0.0, 6.0}, {{0.0, 20000.0}, 3333.0, 0.0, 6.0}};
+  return p;
 }
 
 }  // namespace
@@ -203,6 +216,38 @@ TEST(PlanFollower, PlanOnceIgnoresRisingRiskButNotAnUnsafePlan) {
   EXPECT_NE(why.find("plan predicted to pass within"), std::string::npos) << why;
 }
 
+// Paper mode takes the method's plan as it is: a plan passing a stopped ship 300 m off its track (sea
+// mode replans below plan_clearance, 370 m) is kept; a failed plan holds course and speed, even with an
+// urgent ship 500 m off (sea mode: hard to starboard inside extremis_range, else half speed).
+TEST(PlanFollower, PaperModeKeepsAClosePassAndHasNoSeaFallback) {
+  for (const asv::PlannerMode mode : {asv::PlannerMode::Sea, asv::PlannerMode::Paper}) {
+    SCOPED_TRACE(mode == asv::PlannerMode::Paper ? "paper" : "sea");
+    asv::PlanFollowerConfig c;
+    asv::applyPlannerMode(c, mode);
+    asv::PlanFollower f = northbound(c);
+    asv::PlannerTarget t = standOnTarget(false, asv::RiskLevel::None);
+    t.state.position = {300.0, 5000.0};
+    t.state.speed = 0.0;
+    f.acceptPlan(straightNorth(), 0.0, {t}, "test");
+    std::string why;
+    EXPECT_EQ(f.replanNeeded(20.0, {t}, why), mode == asv::PlannerMode::Sea) << why;
+
+    asv::Plan failed;
+    failed.status = asv::PlanStatus::NoSolution;
+    failed.message = "nothing found";
+    t.risk = asv::RiskLevel::Urgent;
+    t.state.position = {0.0, 500.0};
+    const asv::Plan& got = f.acceptPlan(failed, 30.0, {t}, "test");
+    EXPECT_EQ(got.status, asv::PlanStatus::Fallback);
+    if (mode == asv::PlannerMode::Paper) {
+      EXPECT_NEAR(got.course_setpoint, own().course, 1e-12);
+      EXPECT_NEAR(got.speed_setpoint, 6.0, 1e-12);
+    } else {
+      EXPECT_NEAR(got.course_setpoint, own().course + asv::kPi / 2, 1e-12) << got.message;
+    }
+  }
+}
+
 // Paper mode: the follower's stand-on policy and minimum separation are sea extensions (off), and the
 // planner's plan is taken as it is, without the shared rules' separation net or retries.
 TEST(PlanFollower, PaperModeSwitchesTheSeaExtensionsOff) {
@@ -215,12 +260,28 @@ TEST(PlanFollower, PaperModeSwitchesTheSeaExtensionsOff) {
   EXPECT_FALSE(c.stand_on_policy);
   EXPECT_EQ(c.min_separation, 0.0);
   EXPECT_TRUE(c.replan_on_risk);  // a method that replans keeps replanning on rising risk
+  EXPECT_EQ(c.plan_clearance, 0.0) << "no replan for passing closer than the stack's clearance";
+  EXPECT_EQ(c.extremis_range, 0.0) << "no hard starboard in extremis";
+  EXPECT_EQ(c.fallback_speed_factor, 1.0) << "a failed plan holds course and speed";
   // A method that plans once (ACO, Lazarowska 2015) sails its plan in paper mode; at sea it replans.
   asv::PlanFollowerConfig once;
   asv::applyPlannerMode(once, asv::PlannerMode::Sea, true);
   EXPECT_TRUE(once.replan_on_risk);
   asv::applyPlannerMode(once, asv::PlannerMode::Paper, true);
   EXPECT_FALSE(once.replan_on_risk);
+  EXPECT_FALSE(once.replan_each_cycle);
+  // A method with its own trigger (Wu et al. 2022) is asked at every cycle in paper mode only.
+  asv::PlanFollowerConfig own_trigger;
+  asv::applyPlannerMode(own_trigger, asv::PlannerMode::Sea, false, true);
+  EXPECT_FALSE(own_trigger.replan_each_cycle);
+  asv::applyPlannerMode(own_trigger, asv::PlannerMode::Paper, false, true);
+  EXPECT_TRUE(own_trigger.replan_each_cycle);
+  asv::PlanFollower every = northbound(own_trigger);
+  every.acceptPlan(straightNorth(), 0.0, {}, "test");
+  std::string why;
+  EXPECT_FALSE(every.replanNeeded(1.0, {}, why)) << "not before min_replan_interval (2 s)";
+  EXPECT_TRUE(every.replanNeeded(2.0, {}, why));
+  EXPECT_EQ(why, "the method's own trigger, checked every cycle");
 
   asv::PlanningProblem pr;
   pr.own = own();

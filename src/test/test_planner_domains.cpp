@@ -106,6 +106,9 @@ TEST(PlannerModes, PaperModeIsThePublishedMethod) {
   // Lazarowska (2015) plans once; the other three papers replan.
   EXPECT_TRUE(aco.plansOnce());
   EXPECT_FALSE(asv::GaPlanner().plansOnce());
+  EXPECT_FALSE(asv::GaPlanner().ownTrigger()) << "sea mode: the follower's triggers";
+  EXPECT_TRUE(asv::GaPlanner(asv::GaConfig::paper()).ownTrigger()) << "Wu et al. 2022: the CRI, every cycle";
+  EXPECT_FALSE(aco.ownTrigger());
   EXPECT_FALSE(asv::MopsoPlanner().plansOnce());
   EXPECT_FALSE(asv::DssaPlanner("dssa_plus").plansOnce());
 

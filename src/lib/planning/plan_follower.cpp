@@ -301,15 +301,24 @@ std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem
 
 }  // namespace
 
-void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once) {
+void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once, bool own_trigger) {
   if (mode != PlannerMode::Paper)
     return;
   cfg.stand_on_policy = false;
   cfg.min_separation = 0.0;
   cfg.restricted_passing = false;
   cfg.narrow_fairway_width_m = 0.0;
+  // No paper replans because a plan passes a ship closer than the stack's plan_clearance, and none
+  // turns hard to starboard in extremis or slows when its planner finds nothing: a failed plan holds
+  // course and speed. Still this stack's own in paper mode (docs/results): replanning on rising risk
+  // (unless the method plans once), when the picture goes stale, at a route waypoint or when land comes
+  // within the clearance, and the stop short of land.
+  cfg.plan_clearance = 0.0;
+  cfg.extremis_range = 0.0;
+  cfg.fallback_speed_factor = 1.0;
   if (plans_once)
     cfg.replan_on_risk = false;
+  cfg.replan_each_cycle = own_trigger;
 }
 
 Plan planInMode(const std::function<Plan(const PlanningProblem&)>& make, const PlanningProblem& problem,
@@ -716,6 +725,8 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
   const double since = now - last_plan_time_;
   if (since < cfg_.min_replan_interval)
     return false;
+  if (cfg_.replan_each_cycle)
+    return why = "the method's own trigger, checked every cycle", true;
   if (leg_changed_) {
     leg_changed_ = false;
     return why = "route: waypoint passed, next leg", true;

@@ -64,6 +64,10 @@ struct PlanFollowerConfig {
   // replans, so a trajectory computed once with every target in view is sailed as computed (the
   // experiments of Lazarowska 2015 and Wu et al. 2022 plan once per encounter).
   bool replan_on_risk = true;
+  // Ask the planner again every min_replan_interval, whatever else happens: for a method whose published
+  // form checks its own trigger at every control cycle and decides in the planner (Wu et al. 2022: the
+  // CRI against 0.61, hold_decision) in paper mode, where the stack's triggers are off. Default false.
+  bool replan_each_cycle = false;
   // In restricted waters (land within 1 nm), the planners' sea-scale safety distances are capped at the
   // ship's Kijima and Nakiri (2003) domain (restrictedPassingDistance, planning.h). Off in paper mode.
   bool restricted_passing = true;
@@ -111,11 +115,15 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
 bool altersToPort(const Plan& plan, const PlanningProblem& problem);
 
 // Paper mode (plannerMode, planning.h) runs the method as published: the shared rules above, the
-// follower's stand-on policy and its minimum separation are this stack's sea extensions, so they are
-// off. applyPlannerMode sets the follower for the mode (and, in paper mode, for a method that plans once,
-// PlannerAlgorithm::plansOnce: no replanning on rising risk); planInMode asks the planner under the
-// shared rules at sea and alone in paper mode.
-void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once = false);
+// follower's stand-on policy, its minimum separation, its replanning when a plan passes closer than
+// plan_clearance and its fallback (slow down; hard starboard in extremis) are this stack's sea
+// extensions, so they are off (a failed plan holds course and speed). applyPlannerMode sets the follower
+// for the mode (and, in paper mode, for a method that plans once, PlannerAlgorithm::plansOnce: no
+// replanning on rising risk; for one with its own trigger, PlannerAlgorithm::ownTrigger: a plan asked
+// every cycle, replan_each_cycle); planInMode asks the planner under the shared rules at sea and alone in
+// paper mode.
+void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once = false,
+                      bool own_trigger = false);
 Plan planInMode(const std::function<Plan(const PlanningProblem&)>& make, const PlanningProblem& problem,
                 PlannerMode mode);
 

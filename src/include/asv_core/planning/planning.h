@@ -201,6 +201,9 @@ public:
   // The published method computes its trajectory once and sails it: in paper mode the follower does not
   // replan when a target's risk rises (applyPlannerMode). False by default: the methods replan.
   virtual bool plansOnce() const { return false; }
+  // The published method checks its own trigger at every control cycle and decides (or holds) in the
+  // planner: in paper mode the follower asks it every cycle (replan_each_cycle). False by default.
+  virtual bool ownTrigger() const { return false; }
 
 protected:
   PlannerAlgorithm() = default;

@@ -232,6 +232,8 @@ public:
   // position, the end of the evasive leg, the remaining route and the goal.
   Plan plan(const PlanningProblem& problem) override;
   std::string name() const override { return "ga"; }
+  // Paper mode (hold_decision): the CRI is checked against the threshold at every cycle (Sec. 4.2).
+  bool ownTrigger() const override { return cfg_.hold_decision; }
   const GaConfig& config() const { return cfg_; }
 
 private:
