@@ -62,10 +62,13 @@ const char* kUsage =
     "  --trajectory CSV     write t_s,ship,x_m,y_m,course_deg,speed_mps,lat_deg,lon_deg rows (every\n"
     "                       --sample-period); with --runs > 1 the seed goes into the name: CSV_seed<S>.csv\n"
     "  --risk CSV           write the own ship's risk picture, one row per target every --sample-period:\n"
-    "                       t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role (Hu et al. 2017\n"
+    "                       t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role,cri_eq1 (Hu et "
+    "al. 2017\n"
     "                       risk level 0/1/2 and Algorithm 1 flag) as her planner assesses it (planner "
     "none:\n"
-    "                       the default assessment); with --runs > 1 named as --trajectory\n"
+    "                       the default assessment); cri_eq1 is Wu et al. 2022 eq. (1) without Fig. 3's 0 "
+    "for\n"
+    "                       a passed ship; with --runs > 1 named as --trajectory\n"
     "  --plans CSV          write every plan the own ship's planner made: t_s,reason,status,course_deg,\n"
     "                       speed_mps,message (why it replanned, and the plan's own account: the shared\n"
     "                       rules' retries, the separation manoeuvre); with --runs > 1 named as "
@@ -308,7 +311,7 @@ private:
   void addDssaGroup();
   void openTrajectory();
   void writeTrajectory();
-  void writeRisk(double now, const std::vector<asv::PlannerTarget>& targets);
+  void writeRisk(double now, const std::vector<asv::PlannerTarget>& targets, asv::CriConfig cri);
   void watchRisk(double now);
   void writePlan(double now, const std::string& why, const asv::Plan& plan);
   void sample();
@@ -430,21 +433,25 @@ void BatchRun::openTrajectory() {
     f << header;
   };
   open(traj_, o_.trajectory, "trajectory", "t_s,ship,x_m,y_m,course_deg,speed_mps,lat_deg,lon_deg\n");
-  open(risk_, o_.risk, "risk", "t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role\n");
+  open(risk_, o_.risk, "risk", "t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role,cri_eq1\n");
   open(plans_, o_.plans, "plans", "t_s,reason,status,course_deg,speed_mps,message\n");
 }
 
 // The own ship's picture as its planner saw it (the plugin ship's RiskAssessor), every sample period.
-void BatchRun::writeRisk(double now, const std::vector<asv::PlannerTarget>& targets) {
+// cri is the value the planner decides on (Wu et al. 2022 Fig. 3: 0 once a target is past); cri_eq1 is
+// eq. (1) as printed, without that rule, as the paper's Fig. 9 plots it.
+void BatchRun::writeRisk(double now, const std::vector<asv::PlannerTarget>& targets, asv::CriConfig cri) {
   if (!risk_.is_open() || now < next_risk_ - 1e-9)
     return;
   next_risk_ += o_.sample_period;
-  const Eigen::Vector2d own = sim_.vessels()[0].position();
+  const asv::ShipState own = sim_.vessels()[0].shipState();
+  cri.zero_when_diverging = false;
   char buf[256];
   for (const asv::PlannerTarget& t : targets) {
-    std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.4f,%d,%d,%s\n", now, t.state.id.c_str(),
-                  (t.state.position - own).norm(), t.tcpa, t.dcpa, t.cri, static_cast<int>(t.risk),
-                  t.compliant ? 1 : 0, asv::toString(t.role));
+    const double eq1 = asv::computeCri(own, t.state, asv::computeCpa(own, t.state), cri).cri;
+    std::snprintf(buf, sizeof buf, "%.1f,%s,%.1f,%.1f,%.1f,%.4f,%d,%d,%s,%.4f\n", now, t.state.id.c_str(),
+                  (t.state.position - own.position).norm(), t.tcpa, t.dcpa, t.cri, static_cast<int>(t.risk),
+                  t.compliant ? 1 : 0, asv::toString(t.role), eq1);
     risk_ << buf;
   }
 }
@@ -452,7 +459,7 @@ void BatchRun::writeRisk(double now, const std::vector<asv::PlannerTarget>& targ
 void BatchRun::watchRisk(double now) {
   const bool own_plans = !plugin_ships_.empty() && plugin_ships_.front()->index == 0;
   if (risk_.is_open() && !own_plans)
-    writeRisk(now, plannerTargets(sim_, 0, watch_));
+    writeRisk(now, plannerTargets(sim_, 0, watch_), watch_.config().cri);
 }
 
 // A CSV field: quoted, its quotes doubled (RFC 4180).
@@ -508,7 +515,7 @@ void BatchRun::planPluginShip(PluginShip& ps, double now) {
     return;
   const std::vector<asv::PlannerTarget> targets = plannerTargets(sim_, ps.index, ps.risk);
   if (ps.index == 0)
-    writeRisk(now, targets);
+    writeRisk(now, targets, ps.risk.config().cri);
   ps.follower.updateOwn(v.shipState());
   const asv::CycleResult r = asv::planningCycle(ps.follower, *ps.plugin, ps.mode, now, targets);
   if (r.replanned && ps.index == 0) {

@@ -242,16 +242,24 @@ TEST(AsvBatch, RiskPictureShowsTheFlagOfFigure6) {
   std::ifstream f(csv);
   std::string line;
   ASSERT_TRUE(std::getline(f, line));
-  EXPECT_EQ(line, "t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role");
+  EXPECT_EQ(line, "t_s,target,range_m,tcpa_s,dcpa_m,cri,risk_level,compliant,role,cri_eq1");
   double first_flag = -1.0;
-  int rows = 0;
+  int rows = 0, passed = 0;
   while (std::getline(f, line)) {
     ++rows;
     std::stringstream ss(line);
     std::vector<std::string> c;
     for (std::string cell; std::getline(ss, cell, ',');)
       c.push_back(cell);
-    ASSERT_EQ(c.size(), 9u) << line;
+    ASSERT_EQ(c.size(), 10u) << line;
+    // cri_eq1 is Wu et al. eq. (1) without Fig. 3's rule: the same while the CPA is ahead; once the
+    // ship is past, cri is 0 and eq. (1) is not.
+    if (std::stod(c[3]) > 0.0) {
+      EXPECT_EQ(c[5], c[9]) << line;
+    } else if (std::stod(c[9]) > 0.0) {
+      EXPECT_EQ(std::stod(c[5]), 0.0) << line;
+      ++passed;
+    }
     if (rows == 1) {
       EXPECT_EQ(c[0], "0.0");
       EXPECT_NEAR(std::stod(c[3]), 900.0, 1.0);  // TCPA
@@ -262,6 +270,7 @@ TEST(AsvBatch, RiskPictureShowsTheFlagOfFigure6) {
       first_flag = std::stod(c[0]);
   }
   EXPECT_GT(rows, 100);
+  EXPECT_GT(passed, 0) << "the run goes on after the CPA";
   EXPECT_DOUBLE_EQ(first_flag, 300.0);
   EXPECT_EQ(run("--scenario " + sc + " --follower replan_onrisk=false").status, 2);
   EXPECT_EQ(run("--scenario " + sc + " --follower replan_on_risk").status, 2);
@@ -282,7 +291,7 @@ TEST(AsvBatch, RiskPictureIsWrittenWithoutAPlanner) {
   std::vector<std::string> c;
   for (std::string cell; std::getline(ss, cell, ',');)
     c.push_back(cell);
-  ASSERT_EQ(c.size(), 9u) << first;
+  ASSERT_EQ(c.size(), 10u) << first;
   EXPECT_EQ(c[0], "0.0");
   EXPECT_EQ(c[1], "ts1");
   EXPECT_NEAR(std::stod(c[2]), 4242.6, 0.1);

@@ -1,13 +1,22 @@
 """Wu et al. (2022), Sec. 4: the head-on, crossing and overtaking encounters of Figs. 6-11, closed loop through
 asv_batch with the 3-DOF model of the 40.3 m ASV (wu_asv_40m, eq. 13-22) in the loop, decisions when the CRI
 passes 0.61, and the own ship's CRI of each target every second (asv_batch --risk, with the planner's CRI
-scaling).
+scaling): the CRI rows compare eq. (1) as printed (column cri_eq1, as the paper's Fig. 9 plots it, also after
+a ship has passed), the trigger rows the planner's value (0 once a ship is past, Fig. 3). The head-on also
+runs alone at several TS1 speeds (the paper gives none).
 
 The paper's numbers (Sec. 4.2): steering -28.49 deg (head-on), -28.94 deg (crossing, TS3 first), -31.54 deg
 (overtaking), negative = to starboard in its sign; closest distances 81.53 m (TS1), 61.24 m (TS2), 76.92 m
 (TS3), 43.35 m (TS4); the CRI of TS1 0.62 at the decision (330 s) and 0.43 at 426 s, of TS3 above 0.61 at
 447 s, of TS4 0.44 at 900 s.
 """
+import os
+import shutil
+import tempfile
+
+import yaml
+
+from . import common
 from .common import Job, band_row, exact_row
 
 PAPER = "Wu et al. 2022"
@@ -26,32 +35,83 @@ CRI_AT = [("head-on TS1", "ts1", 330.0, 0.62), ("head-on TS1", "ts1", 426.0, 0.4
 # ASV's length; CRI, the paper's "similar CRI" margin.
 ANGLE_BAND, DIST_BAND, CRI_BAND = 5.0, 20.0, 0.05
 _WIDE = (f"paper mode decides once, when TS1's CRI passes {THRESHOLD} at about 400 m as in the paper, and holds the angle. "
-         "The angle is the heading of least CRI (eq. 1 alone, the paper's objective) for our reconstruction of "
-         "TS1 (3 kn: the paper gives no speed), a wider turn than the paper's, so TS1 passes wider")
+         "The angle is the heading of least CRI (eq. 1 alone, the paper's objective) with the CRI scaled to the 40.3 m "
+         "ASV; it grows with TS1's speed, which the paper does not give, and no speed gives the paper's angle (the "
+         "table \"TS1's speed\" below), so none is fitted: at our 3 kn the turn is wider and TS1 passes wider")
+_CRI_AFTER = ("eq. (1) as printed, after the CPA (Fig. 9 plots it so; the planner's trigger value is 0 there, Fig. 3): "
+              "it falls with TS1's speed, which the paper does not give (\"TS1's speed\" below); at our 3 kn and "
+              "wider pass it is lower than the paper's")
 _CROSSING = ("after the head-on turn the ASV steers for the goal from east of the reconstructed track, so TS2 and TS3 "
              "meet her wider than reconstructed (the paper gives neither their positions nor their speeds): neither "
              f"CRI reaches {THRESHOLD} (TS3's comes close), and no decision is taken at 447 s")
 _OVERTAKING = (f"TS4's CRI passes {THRESHOLD} a little before 800 s and the ASV decides then; the angle of least CRI for our "
                "reconstruction of TS4 (5 kn on 010: the paper gives neither) is smaller than the paper's, and the ASV, "
                "east of the reconstructed track after the head-on turn, passes wider")
-_ZERO = ("Fig. 3 sets the CRI of a target already passed (TCPA < 0) to 0, and the run reports it so; the paper's "
-         "0.43/0.44 at these instants, after the CPA, is evidently plotted without it")
 REASONS = {("head-on TS1", "steering [deg, + starboard]"): _WIDE, ("head-on TS1", "closest distance to TS1 [m]"): _WIDE,
-           ("head-on TS1", "CRI of TS1 at 426 s"): _ZERO, ("overtaking TS4", "CRI of TS4 at 900 s"): _ZERO,
+           ("head-on TS1", "CRI (eq. 1) of TS1 at 426 s"): _CRI_AFTER,
            "crossing TS2 + TS3": _CROSSING, "overtaking TS4": _OVERTAKING}
 
 
+# The paper gives no target speeds. TS1's (ours 3 kn) would be fitted to the printed head-on steering
+# (28.49 deg) if one gave it: the head-on alone, from 60 s before the paper's decision at 330 s (TS1 then
+# 400 m ahead), at each of these speeds [kn].
+TS1_SPEEDS = [1, 2, 3, 5, 8]
+HEAD_ON_LEAD = 60.0  # [s] before the decision
+
+
+def _head_on(kn, workdir):
+    """wu_port's head-on alone, TS1 at kn knots, starting HEAD_ON_LEAD s before TS1 is 400 m ahead."""
+    with open(os.path.join(common.SCENARIOS, "wu_port.yaml")) as f:
+        sc = yaml.safe_load(f)
+    own_v = sc["own_ship"]["speed_mps"]
+    sc["name"] = "wu_head_on_%gkn" % kn
+    sc["duration_s"] = 300
+    sc["own_ship"]["goal"] = {"x_m": 0, "y_m": 3000}
+    ts1 = sc["targets"][0]
+    ts1["speed_kn"] = kn
+    ts1["position"] = {"x_m": 0, "y_m": round(DECISION_RANGE + HEAD_ON_LEAD * (own_v + kn * 1852.0 / 3600.0), 2)}
+    sc["targets"] = [ts1]
+    path = os.path.join(workdir, sc["name"])
+    with open(path + ".yaml", "w") as f:
+        yaml.safe_dump(sc, f, sort_keys=False)
+    return path
+
+
 def jobs(mode="paper"):
-    return [Job("ga_wu_port_%s" % m, "wu_port", "ga", sets=["ga.mode=" + m], risk=True, sample=1.0)
-            for m in (mode, "sea")]
+    out = [Job("ga_wu_port_%s" % m, "wu_port", "ga", sets=["ga.mode=" + m], risk=True, sample=1.0)
+           for m in (mode, "sea")]
+    work = tempfile.mkdtemp(prefix="asv_papers_ga_")
+    out += [Job("ga_head_on_%gkn" % kn, _head_on(kn, work), "ga", sets=["ga.mode=" + mode], risk=True, sample=1.0)
+            for kn in TS1_SPEEDS]
+    return out
 
 
-def cri_at(risk_rows, target, t):
+def _speed_table(done):
+    """TS1's speed against what the paper prints of the head-on."""
+    lines = ["#### TS1's speed", "",
+             "The paper gives no target speed. The head-on alone (from %g s before the decision, TS1 400 m ahead at "
+             "330 s), at each speed of TS1, in paper mode; the combined run above uses 3 kn:" % HEAD_ON_LEAD, "",
+             "| TS1 speed [kn] | steering [deg] | closest distance [m] | CRI (eq. 1) at 426 s |", "|---:|---:|---:|---:|"]
+    t0 = 330.0 - HEAD_ON_LEAD
+    for kn in TS1_SPEEDS:
+        job = done["ga_head_on_%gkn" % kn]
+        r = job.runs[0]
+        alt = first_alteration(r, HEAD_ON_LEAD, 90.0)
+        lines.append("| %g | %s | %.1f | %.2f |" % (kn, "%.1f" % alt["course_change_deg"] if alt else "none",
+                                                    r["targets"][0]["min_distance_m"], cri_at(job.risk_rows, "ts1", 426.0 - t0)))
+    lines.append("| paper | 28.5 | 81.5 | 0.43 |")
+    shutil.rmtree(os.path.dirname(done["ga_head_on_%gkn" % TS1_SPEEDS[0]].scenario), ignore_errors=True)
+    return lines
+
+
+def cri_at(risk_rows, target, t, column="cri_eq1"):
+    """The target's CRI at the sample nearest t: eq. (1) as printed (as Fig. 9 plots it) unless column
+    names the planner's trigger value ("cri": 0 once the target is past, Fig. 3)."""
     best = None
     for r in risk_rows:
         if r["target"] == target and (best is None or abs(float(r["t_s"]) - t) < abs(float(best["t_s"]) - t)):
             best = r
-    return float(best["cri"]) if best else None
+    return float(best[column]) if best else None
 
 
 def first_above(risk_rows, target, threshold):
@@ -92,11 +152,11 @@ def report(done, mode="paper"):
                 rows.append(band_row(PAPER, label, "closest distance to %s [m]" % name.upper(), paper, dist[name],
                                      DIST_BAND, "m"))
             for label, name, t, paper in CRI_AT:
-                rows.append(band_row(PAPER, label, "CRI of %s at %.0f s" % (name.upper(), t), paper,
+                rows.append(band_row(PAPER, label, "CRI (eq. 1) of %s at %.0f s" % (name.upper(), t), paper,
                                      cri_at(risk, name, t), CRI_BAND))
             rows.append(band_row(PAPER, "head-on TS1", f"range of TS1 when its CRI first exceeds {THRESHOLD} [m]",
                                  DECISION_RANGE, first_above(risk, "ts1", THRESHOLD), DIST_BAND, "m"))
             rows.append(exact_row(PAPER, "crossing TS2 + TS3", f"CRI of TS3 above {THRESHOLD} at 447 s", True,
-                                  (cri_at(risk, "ts3", 447.0) or 0.0) > THRESHOLD))
+                                  (cri_at(risk, "ts3", 447.0, "cri") or 0.0) > THRESHOLD))
             rows.append(exact_row(PAPER, "all", "collision-free", True, not r["collision"]))
-    return rows, lines
+    return rows, lines + [""] + _speed_table(done)
