@@ -41,7 +41,7 @@ LENGTH_BAND, TIME_BAND, DETOUR_BAND = 0.05, 0.05, 0.05
 # (492.4 each) is the paper's s>c total 985.5 / 2 at detour 1.00. The offset is fitted: of these, the one
 # whose DSSA total length comes closest to the paper's 1150 (the scenario file must hold it; report()
 # checks). The rows it is fitted to, and the s>c length, are calibration rows.
-OFFSETS = [170, 180, 190, 200, 210, 220]
+OFFSETS = [170, 180, 182, 184, 186, 188, 190, 200, 210, 220]
 STRAIGHT = math.hypot(200.0, 450.0)
 TABLE1_FITTED = {("Table 1, DSSA", "total length of paths"), ("Table 1, DSSA", "travel time of each ship"),
                  ("Table 1, DSSA", "detour rate of each ship"), ("Table 1, DSSA+ s>c", "total length of paths")}
@@ -52,10 +52,13 @@ UNITS = [0.5, 1.0, 2.0]
 UNIT = 1.0
 WEIGHTS = {"dssa": (1.0, 0.0), "dssa_plus_sc": (10.0, 1.0), "dssa_plus_cs": (1.0, 10.0), "dssa_plus_eq": (1.0, 1.0)}
 
-_TABLE1 = ("the paper's DSSA+ s<c is its DSSA (1154 and 1150), as ours is, but Table 1's DSSA outcome is bimodal: "
-           "one ship pushed out the far side (detour about 1.25) or both deflecting a little (about 1.08). Which mode "
-           "the 20 trials take flips between offsets 10 apart (the fit below), so no offset gives the paper's 1.17 "
-           "and the offset fitted to the length lands in the lower mode")
+_TABLE1 = ("Table 1's DSSA outcome is bimodal: one ship pushed out the far side (detour about 1.25) or both deflecting "
+           "a little (about 1.09), and which mode the trials take flips within 1 of offset (the fit below); the paper's "
+           "DSSA+ s<c is its DSSA (1154 and 1150), as ours is")
+_TABLE1_EQ = ("our s=c ships resolve Table 1 partly by slowing, as s>c does (shorter paths, detour near 1), where the "
+              "paper's s=c turns like its DSSA (1154, as s<c): with equal weights a speed change costs "
+              "|spc| / MaxSPD (8 / 33 for the largest) against |turn| / 180 deg (45 / 180 for the largest), so "
+              "slowing is the cheaper escape here")
 _TIME = ("the paper's DSSA+ ships sail slower than their paths: its travel times exceed path / 25 (the time at "
          "RefSPD; the paper's DSSA times are exactly that, 1150 / 2 / 25 = 23.0) by 2-3 units in Tables 1-2 for "
          "every DSSA+ variant, even s<c, whose paths equal DSSA's, and by 11.5 for Table 2 s>c. Ours regain "
@@ -65,7 +68,7 @@ _SCALE = ("the weights of EF are given only as ratios; no one unit gives both th
           "succeeds) and Table 3 s>c (1 of 20): a larger unit makes turning dearer, so more Table 3 ships collide "
           "overtaking and more Table 2 ships fail (the scale table below)")
 REASONS = {
-    "Table 1, DSSA": _TABLE1, "Table 1, DSSA+ s<c": _TABLE1, "Table 1, DSSA+ s=c": _TABLE1,
+    "Table 1, DSSA": _TABLE1, "Table 1, DSSA+ s<c": _TABLE1, "Table 1, DSSA+ s=c": _TABLE1_EQ,
     ("Table 1, DSSA+ s>c", "travel time of each ship"): _TIME,
     ("Table 2, DSSA", "success rate"): ("our DSSA fails less often than the paper's: the 16-ship layout is "
                                         "reconstructed from the prose and the collision distance 40 is our choice "

@@ -41,11 +41,11 @@ DssaScenario dssaTwoShipScenario() {
   DssaScenario s;
   s.name = "two_ships";
   s.description =
-      "Sec. 5.1: two ships side by side 190 apart, each bound 454.313 ahead to the goal on the other's "
+      "Sec. 5.1: two ships side by side 184 apart, each bound 456.776 ahead to the goal on the other's "
       "side, so that their straight tracks cross at the same instant (492.4 each, the paper's 985.5/2 at "
       "detour 1.00); the offset fitted to the DSSA row (total 1150)";
-  s.ships = {ship("ship1", {305, 150}, {495, 604.313}, 25.0),
-             ship("ship2", {495, 150}, {305, 604.313}, 25.0)};
+  s.ships = {ship("ship1", {308, 150}, {492, 606.776}, 25.0),
+             ship("ship2", {492, 150}, {308, 606.776}, 25.0)};
   s.trials = 20;
   return s;
 }
