@@ -235,6 +235,12 @@ TEST(ScenarioGen, LateGiveWayAndRouteBendFamilies) {
     EXPECT_LE(c2.tcpa, bend_time + 900.0 + 2.0) << rb_s.name;
     EXPECT_LE(c2.dcpa, 0.3 * nm + slack) << rb_s.name;
     EXPECT_EQ(rb_s.own.goal, rb_s.own.route[1].position);
+    // No encounter on the first leg: held, it passes the target at 1 nm or more, or its CPA is past
+    // or more than 30 min away at every instant before the bend (the hand CPA's time falls by the
+    // time sailed).
+    const HandCpa c1 = handCpa(rb_s.own, rb_s.targets[0]);
+    EXPECT_TRUE(c1.dcpa >= nm - slack || c1.tcpa <= 0.0 || c1.tcpa - bend_time > 1800.0)
+        << rb_s.name << ": DCPA " << c1.dcpa << " m at " << c1.tcpa << " s on the first leg";
   }
   for (int k : kinds)
     EXPECT_GT(k, 0);

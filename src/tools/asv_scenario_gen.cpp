@@ -71,7 +71,8 @@ const char* const kClassHelp =
     "                   before the CPA and by 15 deg (Rules 16, 17(a)(ii), 17(b))\n"
     "route_bend_crossing\n"
     "                   the own route bends 30-60 deg either way after 5-15 min; a ship crossing the new\n"
-    "                   leg from either side meets her 5-15 min later (Rules 15, 17, 8)\n";
+    "                   leg from either side meets her 5-15 min later, and not the first leg (Rules 15,\n"
+    "                   17, 8)\n";
 
 struct Args {
   std::string out, cls = "all";

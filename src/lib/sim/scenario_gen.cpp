@@ -436,6 +436,21 @@ ShipState stateOf(const ScenarioShip& s) {
   return st;
 }
 
+// Whether a risk of collision with a target forms while the own ship sails her route's first leg: the
+// velocities are constant, so the CPA's distance is the same at every instant and its time falls by the
+// time sailed; risk when that distance is below first_leg_clear_m and the time, at some instant before the
+// bend, lies in (0, first_leg_window_s].
+bool meetsFirstLeg(const GeneratorConfig& cfg, const Scenario& s) {
+  const ShipState own = stateOf(s.own);
+  const double bend_time = (s.own.route.front().position - own.position).norm() / std::max(own.speed, 1e-6);
+  for (const auto& target : s.targets) {
+    const Cpa cpa = computeCpa(own, stateOf(target));
+    if (cpa.dcpa < cfg.first_leg_clear_m && cpa.tcpa > 0.0 && cpa.tcpa - bend_time <= cfg.first_leg_window_s)
+      return true;
+  }
+  return false;
+}
+
 // Start ranges and encounters; "" when the draw is as intended, else the reason it is refused.
 std::string checkGeometry(const GeneratorConfig& cfg, const Scenario& s,
                           const std::vector<TargetDraw>& draws) {
@@ -459,6 +474,8 @@ std::string checkGeometry(const GeneratorConfig& cfg, const Scenario& s,
   for (const auto& o : s.obstacles)
     if (s.own.goal && obstacleDistance(o, *s.own.goal, *s.own.goal) < cfg.obstacle_clearance_m)
       return "goal inside an obstacle's clearance";
+  if (s.own.route.size() >= 2 && meetsFirstLeg(cfg, s))
+    return "target meets the route's first leg";
   return "";
 }
 
@@ -652,6 +669,8 @@ void GeneratorConfig::validate() const {
   require(min_separation_m > 0.0 && obstacle_clearance_m > 0.0,
           "min_separation_m and obstacle_clearance_m must be > 0");
   require(start_range_min_factor >= 1.0, "start_range_min_factor must be >= 1");
+  require(first_leg_clear_m >= 0.0 && first_leg_window_s >= 0.0,
+          "first_leg_clear_m and first_leg_window_s must be >= 0");
   require(start_range_max_m > start_range_min_factor * min_separation_m,
           "start_range_max_m must exceed start_range_min_factor x min_separation_m");
   require(check_dt > 0.0 && check_dt <= 5.0, "check_dt must be in (0, 5] s");

@@ -71,8 +71,15 @@ struct GeneratorConfig {
   double obstacle_clearance_m = 185.2;  // Coastal: safety.min_obstacle_clearance_m (0.1 nm)
   double start_range_min_factor = 2.0;  // ships start at least this x min_separation apart
   double start_range_max_m = 11.0 * 1852.0;  // and inside the classifier's 12 nm horizon
-  double check_dt = 1.0;                     // [s] time step of the feasibility search
-  int max_redraws = 2000;                    // per situation, then std::runtime_error
+  // RouteBendCrossing: the target must not meet the first leg. Were the own ship to hold it, no risk of
+  // collision may form before the bend: a CPA nearer than first_leg_clear_m with a TCPA within
+  // first_leg_window_s at some time before the bend (the referee's default entry, 1 nm and 30 min).
+  // Otherwise the encounter latches on the first leg (an overtaking, say; Rule 13(d)) and the crossing
+  // of the second leg the class draws never forms.
+  double first_leg_clear_m = 1852.0;
+  double first_leg_window_s = 1800.0;
+  double check_dt = 1.0;   // [s] time step of the feasibility search
+  int max_redraws = 2000;  // per situation, then std::runtime_error
   void validate() const;
 };
 
