@@ -58,7 +58,7 @@ CLAIMS = [
     ("Hirayama et al. 2019", "Table 3, DSSA", "success rate"),
     ("Hirayama et al. 2019", "Table 2, DSSA+ s=c", "success rate"),
     ("Hirayama et al. 2019", "Table 2, DSSA+ s>c", "success rate"),  # arrived ships stay, MinSPD RefSPD / 2
-    ("Lazarowska 2015", "Scenario 1 (Table 3)", "alteration 1 side"),
+    ("Lazarowska 2015", "Scenario 1 (Table 3)", "alteration 1 side (planned)"),
     ("Wu et al. 2022", "all", "collision-free"),
 ]
 

@@ -115,7 +115,7 @@ class PaperPipeline(unittest.TestCase):
                 self.assertLess(abs(t["min_distance_m"] - want), band * want, what)
 
     def test_lazarowska_1_aco_paper_mode(self):
-        r = run("lazarowska_1", "aco", 5400.0, self.risks)
+        r = run("lazarowska_1", "aco", 3000.0, self.risks)
         ref = batch("lazarowska_1")
         self.agree(r, ref)
         self.assertEqual([r["plan_time_ms"]["count"], ref["plan_time_ms"]["count"]], [1, 1], "plans once")

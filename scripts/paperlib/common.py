@@ -20,10 +20,12 @@ class Job:
     """One asv_batch call: a scenario, the own ship's planner, a seed range and parameter overrides."""
 
     def __init__(self, key, scenario, planner, seeds=1, first_seed=1, sets=(), agents=None, risk=False, sample=5.0,
-                 follower=()):
+                 follower=(), plans=False, trajectory=False):
         self.key, self.scenario, self.planner, self.sample = key, scenario, planner, sample
         self.follower = list(follower)
         self.seeds, self.first_seed, self.sets, self.agents, self.risk = seeds, first_seed, list(sets), agents, risk
+        # Extra CSVs of the first seed's run (asv_batch --plans, --trajectory), as lists of row dicts.
+        self.extra = {name: [] for name, on in (("plans", plans), ("trajectory", trajectory)) if on}
         self.runs, self.risk_rows, self.wall = [], [], 0.0
 
     def command(self, batch, workdir):
@@ -39,7 +41,17 @@ class Job:
             cmd += ["--agents", self.agents]
         if self.risk:
             cmd += ["--risk", os.path.join(workdir, self.key + "_risk.csv")]
+        for name in self.extra:
+            cmd += ["--" + name, os.path.join(workdir, "%s_%s.csv" % (self.key, name))]
         return cmd, out
+
+    def _first_seed_csv(self, path):
+        """asv_batch names a CSV of several runs per seed: the first seed's."""
+        if self.seeds > 1:
+            root, ext = os.path.splitext(path)
+            path = "%s_seed%d%s" % (root, self.first_seed, ext)
+        with open(path) as f:
+            return list(csv.DictReader(f))
 
     def run(self, batch, workdir):
         cmd, out = self.command(batch, workdir)
@@ -51,12 +63,9 @@ class Job:
         with open(out) as f:
             self.runs = [json.loads(line) for line in f if line.strip()]
         if self.risk:
-            path = os.path.join(workdir, self.key + "_risk.csv")
-            if self.seeds > 1:
-                root, ext = os.path.splitext(path)
-                path = "%s_seed%d%s" % (root, self.first_seed, ext)
-            with open(path) as f:
-                self.risk_rows = list(csv.DictReader(f))
+            self.risk_rows = self._first_seed_csv(os.path.join(workdir, self.key + "_risk.csv"))
+        for name in self.extra:
+            self.extra[name] = self._first_seed_csv(os.path.join(workdir, "%s_%s.csv" % (self.key, name)))
         return self
 
 

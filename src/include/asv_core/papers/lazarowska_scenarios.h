@@ -17,10 +17,12 @@ struct LazarowskaShip {
   double range_nm = 0.0;     // [nm] range from the own ship (targets only)
 };
 
-// The paper does not state where the final waypoint wp_e lies. Its figures end with the own ship back
-// on a course near the initial one after the encounter, so we put wp_e on the initial course line at
-// this range [nm], beyond every target's initial range (Scenario 2's farthest is 10.5 nm).
-constexpr double kLazarowskaGoalRangeNm = 12.0;
+// The paper does not state where the final waypoint wp_e lies; calibrated from both printed answers.
+// On the initial course line (both answers end back near it), and where both answers, drawn as the
+// grid paths they are (AcoConfig::long_edges: Scenario 1 cells (5, 1), (9, 0); Scenario 2 (5, -1),
+// (8, 0), (9, 0)), enter no hexagon: 6.2-7.3 nm (test_aco_planner's LazarowskaScenarios tests; Scenario 2
+// meets target 5 below, target 2 above). Our value is the middle, 6.75 nm [nm].
+constexpr double kLazarowskaGoalRangeNm = 6.75;
 
 // omega of eq. (6) for the paper's scenarios [rad/s]. The paper measures it in turning trials and gives
 // no value; 0.02 rad/s (1.15 deg/s) is our choice for its 150-200 m ships at 12-20 kn, and the

@@ -16,7 +16,10 @@ namespace asv {
 namespace {
 
 constexpr int kMaxLateralSteps = 16;
-constexpr int kMaxRows = 1000;          // keeps the lattice (and the pheromone table) bounded
+constexpr int kMaxRows = 1000;        // keeps the lattice (and the pheromone table) bounded
+constexpr int kMaxLongEdgeRows = 32;  // longest long edge in rows: bounds the neighbourhood (~3000)
+// Paper mode's grid cell [m] (square; AcoConfig::paper): see the header's long_edges.
+constexpr double kLazarowskaCell = 0.75 * 1852.0;
 constexpr double kStraightTol = 1e-9;   // [rad] course change below which a leg continues the last
 constexpr double kMinLegLength = 1e-6;  // [m]
 
@@ -66,6 +69,10 @@ AcoConfig AcoConfig::paper() {
   AcoConfig c;
   c.min_first_alteration = 0.0;
   c.smooth = false;
+  c.row_spacing = c.column_spacing = kLazarowskaCell;
+  c.lateral_steps = 1;
+  c.long_edges = true;
+  c.danger_by_course = true;
   c.colregs_factor = 1.0;
   c.inflate = false;
   return c;
@@ -84,6 +91,8 @@ AcoConfig AcoConfig::fromParams(const ParamMap& params) {
   c.column_spacing = params.getDouble("column_spacing_m", c.column_spacing);
   c.lateral_steps = params.getInt("lateral_steps", c.lateral_steps);
   c.half_width = params.getDouble("half_width_m", c.half_width);
+  c.long_edges = params.getBool("long_edges", c.long_edges);
+  c.danger_by_course = params.getBool("danger_by_course", c.danger_by_course);
   c.min_first_alteration =
       degToRad(params.getDouble("min_first_alteration_deg", radToDeg(c.min_first_alteration)));
   c.max_alteration = degToRad(params.getDouble("max_alteration_deg", radToDeg(c.max_alteration)));
@@ -593,8 +602,8 @@ HexagonDomainConfig inflatedDomain(HexagonDomainConfig domain, const PlanningPro
 }
 
 // Step (5), the ant colony on the construction graph (Lazarowska 2015, Sec. 2.3): pheromone trails on
-// the vertices, ants that walk row by row to the final waypoint, the best path of each iteration kept
-// for the waypoint reduction.
+// the vertices, ants that walk forward row by row (or, with long edges, across rows) to the final
+// waypoint, the best path of each iteration kept for the waypoint reduction.
 class Colony {
 public:
   Colony(const PlanningProblem& problem, const AcoConfig& cfg, const AcoGraph& graph, const Search& search,
@@ -610,70 +619,84 @@ public:
 private:
   struct Option {
     int vertex;
-    int k;
+    double eta_beta;
     Motion next;
   };
   double tauAlpha(int v) const { return cfg_.alpha == 1.0 ? tau_[v] : std::pow(tau_[v], cfg_.alpha); }
-  int roulette(int n, double total);
-  bool walk(int* w, double* length);
-  int nextOptions(int row, int v, const Motion& m, double* total);
-  void keepIterationBest(int ants_run);
+  double etaBeta(int r, int k) const;
+  int roulette(double total);
+  bool walk(std::vector<int>* w, double* length);
+  void collectOptions(int v, const Motion& m, std::vector<Option>* out) const;
+  void keepIterationBest();
   void updatePheromone();
 
   const AcoConfig& cfg_;
   const AcoGraph& graph_;
   const Search& search_;
   AcoDiagnostics& diag_;
-  const int rows_, k_max_;
+  const int k_max_;
   const double straight_;  // [m] the straight distance to the final waypoint
   std::vector<double> tau_;
   std::mt19937_64 rng_;
-  std::array<double, 2 * kMaxLateralSteps + 1> eta_beta_{};
-  std::vector<Option> first_;  // the first step's feasible moves, the same for every ant
-  std::vector<int> walks_, best_walk_;
+  std::vector<Option> first_;            // the first step's feasible moves, the same for every ant
+  std::vector<std::vector<int>> walks_;  // this iteration's walks (empty: the ant died)
   std::vector<double> walk_len_;
+  std::vector<int> best_walk_;
   double best_len_ = std::numeric_limits<double>::infinity();
   std::vector<std::vector<int>> elite_;
-  std::array<Option, 2 * kMaxLateralSteps + 1> cand_;
-  std::array<double, 2 * kMaxLateralSteps + 1> weight_;
+  std::vector<Option> cand_;
+  std::vector<double> weight_;
 };
 
-// Data initialisation (2.3.1): tau0 on every vertex, visibility eta = 1 / distance to the neighbour
-// (2.3.2; a lattice edge's length depends on k only), and the first step's moves, computed once.
+// Data initialisation (2.3.1): tau0 on every vertex and the first step's moves, computed once.
 Colony::Colony(const PlanningProblem& problem, const AcoConfig& cfg, const AcoGraph& graph,
                const Search& search, AcoDiagnostics& diag)
     : cfg_(cfg),
       graph_(graph),
       search_(search),
       diag_(diag),
-      rows_(graph.rows()),
       k_max_(graph.lateralSteps()),
       straight_((nextWayPoint(problem) - problem.own.position).norm()),
       tau_(graph.vertexCount(), cfg.tau0),
       rng_(problem.seed),
-      walks_(static_cast<size_t>(cfg.ants) * graph.rows()),
-      best_walk_(graph.rows()),
+      walks_(cfg.ants),
       walk_len_(cfg.ants) {
-  for (int k = -k_max_; k <= k_max_; ++k) {
-    const double len = std::hypot(graph_.rowSpacing(), k * graph_.columnSpacing());
-    eta_beta_[k + k_max_] = cfg_.beta == 1.0 ? 1.0 / len : std::pow(1.0 / len, cfg_.beta);
-  }
-  const Motion& m0 = search_.initial();
-  for (int k = -k_max_; k <= k_max_; ++k) {
-    if (k < -graph_.halfColumns() || k > graph_.halfColumns())
-      continue;
-    const int q = graph_.id(1, k);
-    Step s;
-    if (graph_.inGraph(q) && graph_.edgeStaticFree(graph_.startId(), k) &&
-        search_.advance(m0, graph_.position(q), true, &s))
-      first_.push_back({q, k, s.next});
-  }
+  collectOptions(graph_.startId(), search_.initial(), &first_);
+}
+
+// Visibility (2.3.2): eta = 1 / the distance to the neighbour r rows on and k columns sideways.
+double Colony::etaBeta(int r, int k) const {
+  const double len = std::hypot(r * graph_.rowSpacing(), k * graph_.columnSpacing());
+  return cfg_.beta == 1.0 ? 1.0 / len : std::pow(1.0 / len, cfg_.beta);
+}
+
+// The feasible neighbourhood of vertex v (in state m): the next row, at most K columns sideways, or
+// with long edges any later row r on, at most r K columns sideways. Each option is in the graph,
+// statically free (known for lattice edges) and free of every target domain in time.
+void Colony::collectOptions(int v, const Motion& m, std::vector<Option>* out) const {
+  out->clear();
+  const int row = graph_.rowOf(v), col = graph_.colOf(v), m_cols = graph_.halfColumns();
+  const int last_r = cfg_.long_edges ? std::min(graph_.rows() - 1 - row, kMaxLongEdgeRows) : 1;
+  Step s;
+  for (int r = 1; r <= last_r; ++r)
+    for (int k = -k_max_ * r; k <= k_max_ * r; ++k) {
+      const int jj = col + k;
+      if (jj < -m_cols || jj > m_cols)
+        continue;
+      const int q = graph_.id(row + r, jj);
+      const bool lattice_edge = r == 1;
+      if (!graph_.inGraph(q) || (lattice_edge && !graph_.edgeStaticFree(v, k)) ||
+          !search_.advance(m, graph_.position(q), lattice_edge, &s))
+        continue;
+      out->push_back({q, etaBeta(r, k), s.next});
+    }
 }
 
 // Action choice rule, eq. (7): P_j = tau_j^alpha eta_j^beta / sum over the feasible neighbourhood;
 // roulette: q uniform in [0, 1], walk the neighbours until the summed probability exceeds q.
-int Colony::roulette(int n, double total) {
+int Colony::roulette(double total) {
   const double q = uniform01(rng_);
+  const int n = static_cast<int>(weight_.size());
   double cum = 0.0;
   for (int c = 0; c < n; ++c) {
     cum += weight_[c] / total;
@@ -683,66 +706,41 @@ int Colony::roulette(int n, double total) {
   return n - 1;
 }
 
-// The feasible moves from vertex v of `row` (in state m) to the next row, into cand_ and weight_;
-// returns their number and their summed weight in *total.
-int Colony::nextOptions(int row, int v, const Motion& m, double* total) {
-  const int col = graph_.colOf(v);
-  int n = 0;
-  *total = 0.0;
-  Step s;
-  for (int k = -k_max_; k <= k_max_; ++k) {
-    const int jj = col + k;
-    if (jj < -graph_.halfColumns() || jj > graph_.halfColumns())
-      continue;
-    const int q = graph_.id(row + 1, jj);
-    if (!graph_.inGraph(q) || !graph_.edgeStaticFree(v, k) ||
-        !search_.advance(m, graph_.position(q), true, &s))
-      continue;
-    cand_[n] = {q, k, s.next};
-    weight_[n] = tauAlpha(q) * eta_beta_[k + k_max_];
-    *total += weight_[n++];
-  }
-  return n;
-}
-
-// Solution construction (2.3.2): one ant's walk, row by row, into w. False when the ant is boxed in
-// by the domains (only feasible solutions count, 2.3.4); else its length, eq. (9).
-bool Colony::walk(int* w, double* length) {
-  int n = 0;
-  double total = 0.0;
-  for (const auto& o : first_) {
-    cand_[n] = o;
-    weight_[n] = tauAlpha(o.vertex) * eta_beta_[o.k + k_max_];
-    total += weight_[n++];
-  }
+// Solution construction (2.3.2): one ant's walk to the final waypoint, into w. False when the ant is
+// boxed in by the domains (only feasible solutions count, 2.3.4); else its length, eq. (9).
+bool Colony::walk(std::vector<int>* w, double* length) {
   int v = graph_.startId();
-  w[0] = v;
+  w->assign(1, v);
   Motion m;
-  for (int row = 0; row + 1 < rows_; ++row) {
-    if (row > 0)
-      n = nextOptions(row, v, m, &total);
-    if (n == 0 || !(total > 0.0))
+  while (v != graph_.goalId()) {
+    if (v == graph_.startId())
+      cand_ = first_;
+    else
+      collectOptions(v, m, &cand_);
+    weight_.clear();
+    double total = 0.0;
+    for (const Option& o : cand_) {
+      weight_.push_back(tauAlpha(o.vertex) * o.eta_beta);
+      total += weight_.back();
+    }
+    if (cand_.empty() || !(total > 0.0))
       return false;
-    const int c = roulette(n, total);
-    v = cand_[c].vertex;
-    m = cand_[c].next;
-    w[row + 1] = v;
+    const Option& pick = cand_[roulette(total)];
+    v = pick.vertex;
+    m = pick.next;
+    w->push_back(v);
   }
   *length = m.length;
   return true;
 }
 
-void Colony::keepIterationBest(int ants_run) {
+void Colony::keepIterationBest() {
   int it_best = -1;
-  for (int a = 0; a < ants_run; ++a)
+  for (int a = 0; a < cfg_.ants; ++a)
     if (walk_len_[a] > 0.0 && (it_best < 0 || walk_len_[a] < walk_len_[it_best]))
       it_best = a;
-  if (it_best < 0)
-    return;
-  const int* w = &walks_[static_cast<size_t>(it_best) * rows_];
-  std::vector<int> cand_walk(w, w + rows_);
-  if (std::find(elite_.begin(), elite_.end(), cand_walk) == elite_.end())
-    elite_.push_back(std::move(cand_walk));
+  if (it_best >= 0 && std::find(elite_.begin(), elite_.end(), walks_[it_best]) == elite_.end())
+    elite_.push_back(walks_[it_best]);
 }
 
 // Pheromone update, eq. (8): evaporation on every vertex, then each ant's deposit.
@@ -753,28 +751,26 @@ void Colony::updatePheromone() {
     if (walk_len_[a] <= 0.0)
       continue;
     const double amount = cfg_.deposit * straight_ / walk_len_[a];
-    const int* w = &walks_[static_cast<size_t>(a) * rows_];
-    for (int r = 0; r < rows_; ++r)
-      tau_[w[r]] += amount;
+    for (int v : walks_[a])
+      tau_[v] += amount;
   }
 }
 
 bool Colony::run(const Deadline& deadline) {
   for (int it = 0; it < cfg_.iterations && !diag_.stopped_by_time; ++it) {
     int ants_run = 0;
+    std::fill(walk_len_.begin(), walk_len_.end(), -1.0);
     for (int a = 0; a < cfg_.ants; ++a) {
-      int* w = &walks_[static_cast<size_t>(a) * rows_];
-      walk_len_[a] = -1.0;
       ++ants_run;
       double len = 0.0;
-      if (!walk(w, &len)) {
+      if (!walk(&walks_[a], &len)) {
         ++diag_.ants_dead;
       } else {
         ++diag_.ants_completed;
         walk_len_[a] = len;
         if (len < best_len_) {
           best_len_ = len;
-          std::copy(w, w + rows_, best_walk_.begin());
+          best_walk_ = walks_[a];
         }
       }
       if (deadline.expired()) {
@@ -782,7 +778,7 @@ bool Colony::run(const Deadline& deadline) {
         break;
       }
     }
-    keepIterationBest(ants_run);
+    keepIterationBest();
     if (diag_.stopped_by_time && ants_run < cfg_.ants)
       break;  // an unfinished iteration leaves the trail as it was
     updatePheromone();
@@ -850,9 +846,23 @@ Plan AcoRun::finish(const std::vector<TrajPoint>& traj, double length, const std
   return plan;
 }
 
-// Step (3), dangerous targets: those whose domain the unaltered route to the final waypoint enters.
-// Without any, and with no land in the way, the direct route is the shortest safe trajectory: true
-// and that route in *traj, *len.
+// Step (3) as printed: target t's course line crosses the own ship's ahead of both. Parallel
+// courses never cross; for them `enters` (the direct route enters her domain) decides.
+bool coursesCross(const ShipState& own, const PlannerTarget& t, bool enters) {
+  const Eigen::Vector2d u = unitOfCourse(own.course), w = unitOfCourse(t.state.course);
+  const Eigen::Vector2d d = t.state.position - own.position;
+  const double den = u.x() * (-w.y()) - u.y() * (-w.x());
+  if (std::abs(den) < 1e-9)
+    return enters;
+  // own + s u = target + q w  ->  s u - q w = d (Cramer's rule).
+  const double s = (d.x() * (-w.y()) - d.y() * (-w.x())) / den;
+  const double q = (u.x() * d.y() - u.y() * d.x()) / den;
+  return s >= 0.0 && q >= 0.0;
+}
+
+// Step (3), dangerous targets (AcoConfig::danger_by_course: as printed, else those whose domain the
+// unaltered route to the final waypoint enters). Without any, and with no land and no domain in the
+// way, the direct route is the shortest safe trajectory: true and that route in *traj, *len.
 bool AcoRun::directRoute(const AcoEnvironment& env, const Eigen::Vector2d& goal, std::vector<TrajPoint>* traj,
                          double* len) {
   const Motion& m0 = search_->initial();
@@ -862,11 +872,15 @@ bool AcoRun::directRoute(const AcoEnvironment& env, const Eigen::Vector2d& goal,
   if (search_->advance(m0, goal, false, &s, false)) {
     const Eigen::Vector2d a = m0.pos, b = s.inserted ? s.turn_point : m0.pos;
     const double tb = s.inserted ? s.turn_time : 0.0;
-    for (size_t j = 0; j < env.targetCount(); ++j)
-      if ((s.inserted && env.segmentHitsTarget(j, a, 0.0, b, tb)) ||
-          env.segmentHitsTarget(j, b, tb, goal, s.next.time))
-        ++diag_.dangerous_targets;
-    direct = diag_.dangerous_targets == 0 && search_->trajectory({m0.pos, goal}, traj, len);
+    int entered = 0;
+    for (size_t j = 0; j < env.targetCount(); ++j) {
+      const bool enters = (s.inserted && env.segmentHitsTarget(j, a, 0.0, b, tb)) ||
+                          env.segmentHitsTarget(j, b, tb, goal, s.next.time);
+      entered += enters;
+      diag_.dangerous_targets +=
+          cfg_.danger_by_course ? coursesCross(problem_.own, problem_.targets[j], enters) : enters;
+    }
+    direct = diag_.dangerous_targets == 0 && entered == 0 && search_->trajectory({m0.pos, goal}, traj, len);
   }
   search_->enforceMinFirst(true);
   return direct;

@@ -62,6 +62,21 @@ struct AcoConfig {
   double half_width = 3.0 * 1852.0;  // [m] key half_width_m: cross-track extent of the lattice on
                                      // each side of the base line, inside the eq. (1) bounds when
                                      // those are given. Default 3 nm.
+  // Key long_edges: an ant may move from row i to any later row i + r, at most r * lateral_steps
+  // columns sideways (the same widest leg direction), instead of to row i + 1 only. With eta = 1 /
+  // edge length (2.3.2) the summed weight of each later row is about the same, so a walk is a few long
+  // legs (~ln(rows)). Paper mode's graph, our reading of the lost Fig. 6: square cells of 0.75 nm,
+  // lateral_steps 1 (legs up to 45 deg off the base line), long edges. Why: every course the paper
+  // prints is a grid slope off its base line, atan(1/5) = 11.3, atan(1/4) = 14.0, atan(1/3) = 18.4 deg
+  // (Scenario 1: 077, 052 from 066; Scenario 2: 050, 079 from 061), and Scenario 1's answer, cells
+  // (5, 1) then (9, 0), puts wp_e 9 cells out; 0.75 nm = 6.75 nm / 9, wp_e calibrated in
+  // lazarowska_scenarios.h. Sea mode (false) keeps one row per move and smooths the staircase instead.
+  bool long_edges = false;
+  // Key danger_by_course: step (3) as printed, a target is dangerous when its course line crosses the
+  // own ship's ahead of both (parallel courses: when the direct route enters her domain). Our safety
+  // net on it: the direct route is returned only when it also enters no domain. False (sea mode): a
+  // target is dangerous when the direct route enters her domain.
+  bool danger_by_course = false;
 
   // --- Manoeuvres (COLREGs Rule 8(b) and the manoeuvre time, eq. 5-6) ---
   // [rad] key min_first_alteration_deg: the first course alteration away from the present course must
@@ -95,8 +110,8 @@ struct AcoConfig {
   bool inflate = true;
 
   // Key mode (planning.h): sea, the defaults above; paper, Lazarowska (2015) alone: no minimum first
-  // alteration, no waypoint reduction, colregs_factor 1, no inflation (the extensions' keys still
-  // override when given).
+  // alteration, no waypoint reduction, colregs_factor 1, no inflation, long_edges, and step (3)'s
+  // dangerous target as printed (AcoDiagnostics::dangerous_targets) (the keys still override).
   static AcoConfig paper();
   // Throws std::invalid_argument naming the bad field.
   void validate() const;
@@ -203,11 +218,13 @@ private:
 
 // What the last plan() did, for tests, reports and the rviz layer.
 struct AcoDiagnostics {
-  int iterations_run = 0;     // completed colony iterations
-  int ants_completed = 0;     // ants that reached the final waypoint over all iterations
-  int ants_dead = 0;          // ants boxed in before the final waypoint (discarded)
-  int graph_vertices = 0;     // vertices in the construction graph
-  int dangerous_targets = 0;  // targets whose domain the unaltered route to the goal enters (step 3)
+  int iterations_run = 0;  // completed colony iterations
+  int ants_completed = 0;  // ants that reached the final waypoint over all iterations
+  int ants_dead = 0;       // ants boxed in before the final waypoint (discarded)
+  int graph_vertices = 0;  // vertices in the construction graph
+  // Step (3): sea mode, targets whose domain the unaltered route to the goal enters; paper mode, as
+  // printed, targets whose course line crosses the own ship's ahead of both ships.
+  int dangerous_targets = 0;
   bool direct_route = false;  // no dangerous target: the direct route was returned, no ACO run
   bool stopped_by_time = false;
   double best_walk_length = 0.0;           // [m] eq. (9) of the best lattice path
