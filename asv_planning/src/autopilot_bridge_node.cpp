@@ -53,6 +53,7 @@ AutopilotBridgeNode::AutopilotBridgeNode(ros::NodeHandle nh, ros::NodeHandle pnh
   alarm_ = std::make_unique<asv_ros::AlarmReporter>(nh_);
   cmd_sub_ = nh_.subscribe("cmd", 10, &AutopilotBridgeNode::cmdCallback, this);
   odom_sub_ = nh_.subscribe("odom", 20, &AutopilotBridgeNode::odomCallback, this);
+  route_sub_ = nh_.subscribe("active_route", 1, &AutopilotBridgeNode::routeCallback, this);
   if (publish_twist_)
     twist_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("cmd_vel", 5);
   arm_srv_ = pnh_.advertiseService("arm", &AutopilotBridgeNode::armService, this);
@@ -79,6 +80,23 @@ void AutopilotBridgeNode::odomCallback(const nav_msgs::Odometry::ConstPtr& msg) 
     return;
   }
   bridge_->own(s.position, s.course, s.speed, s.heading, ros::Time::now().toSec(), asv_ros::wallNow());
+}
+
+// The route in force (planner_node's active_route, latched), in map only: another frame is refused,
+// not misplaced, and the route sentences stay with the set-point's leg.
+void AutopilotBridgeNode::routeCallback(const nav_msgs::Path::ConstPtr& msg) {
+  const std::string& frame = msg->header.frame_id;
+  if (!frame.empty() && frame != "map" && frame != "/map") {
+    ROS_WARN("autopilot_bridge: route in frame '%s', not map: ignored", frame.c_str());
+    return;
+  }
+  std::vector<Eigen::Vector2d> route;
+  for (const auto& p : msg->poses)
+    route.emplace_back(p.pose.position.x, p.pose.position.y);
+  bridge_->route(route);
+  route_waypoints_ = route.size();
+  ROS_INFO("autopilot_bridge: route of %zu waypoint(s): its active leg is sent while the ship follows it",
+           route.size());
 }
 
 bool AutopilotBridgeNode::armService(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res) {
@@ -122,6 +140,9 @@ void AutopilotBridgeNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& 
   stat.add("sentences sent", output_->sent());
   stat.add("writes failed", output_->failed());
   stat.add("route sentences valid", last_.valid);
+  stat.add("route waypoints", route_waypoints_);
+  stat.add("leg sent", last_.route_waypoint ? "route, to WP" + std::to_string(*last_.route_waypoint + 1)
+                                            : std::string("set-point"));
   if (!bridge_->armed())
     stat.summary(diagnostic_msgs::DiagnosticStatus::WARN, "disarmed: nothing sent (call ~arm)");
   else if (output_->failed() > 0)

@@ -11,6 +11,12 @@
 //  - set-points stop (input_timeout 1 s, safe_action invalidate): APB, RMB and XTE with status V and mode
 //    N, no HSC, and an ERROR alarm naming the set-point;
 //  - disarmed again: nothing.
+//  - a route on active_route (latched, map): from (0, 0), where the ship is when it comes, to WP001
+//    3000 m east. The ship at (1000, 100) on set-point 090, within 10 deg of the course to the leg's
+//    line-of-sight point (atan2(1852, -100) = 93.1): the route's leg, WP000 -> WP001, bearing 090.0,
+//    cross-track 0.054 nm steer right, WP001 bearing atan2(2000, -100) = 92.9 at 2002 m = 1.08 nm, heading
+//    to steer the set-point 090.0; RMB's destination 3000 m east: 3000 / (N cos 54.6 deg) = 0.046419
+//    deg = 2.7851' east, 018 50.7851' E.
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
@@ -26,6 +32,7 @@
 #include <asv_msgs/Alarm.h>
 #include <asv_msgs/CourseSpeedSetpoint.h>
 #include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 
@@ -158,6 +165,39 @@ TEST_F(BridgeTest, ArmedSetpointsBecomeTheSentencesAnAutopilotSteersBy) {
   ASSERT_TRUE(arm(false));
   run(1000.0, 100.0, true, 0.3);  // a tick in flight
   EXPECT_TRUE(run(1000.0, 100.0, true, 1.0).empty()) << "sentences sent after disarming";
+}
+
+TEST_F(BridgeTest, ARouteInForceIsSentAsItsOwnLeg) {
+  ros::Publisher route = nh_.advertise<nav_msgs::Path>("active_route", 1, true);
+  run(0.0, 0.0, true, 0.5);  // the ship at (0, 0) when the route comes
+  nav_msgs::Path path;
+  path.header.frame_id = "map";
+  path.header.stamp = ros::Time::now();
+  geometry_msgs::PoseStamped wp;
+  wp.pose.position.x = 3000.0;
+  wp.pose.orientation.w = 1.0;
+  path.poses.push_back(wp);
+  route.publish(path);
+  run(0.0, 0.0, true, 1.0);
+  ASSERT_TRUE(arm(true));
+  const std::vector<std::string> got = run(1000.0, 100.0, true, 1.5);
+  const auto apb = ofType(got, "APB");
+  ASSERT_FALSE(apb.empty());
+  const auto a = fields(apb.back());
+  ASSERT_GE(a.size(), 16u);
+  EXPECT_EQ(a[3], "0.054");
+  EXPECT_EQ(a[4], "R");
+  EXPECT_EQ(a[8], "90.0");
+  EXPECT_EQ(a[10], "WP001");
+  EXPECT_EQ(a[11], "92.9");
+  EXPECT_EQ(a[13], "90.0");
+  const auto r = fields(ofType(got, "RMB").back());
+  ASSERT_GE(r.size(), 15u);
+  EXPECT_EQ(r[4], "WP000");
+  EXPECT_EQ(r[5], "WP001");
+  EXPECT_NEAR(std::stod(std::string(r[8].substr(3))), 50.7851, 0.002);
+  EXPECT_EQ(r[10], "1.1");
+  ASSERT_TRUE(arm(false));
 }
 
 }  // namespace

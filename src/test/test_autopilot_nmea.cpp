@@ -193,12 +193,63 @@ TEST(AutopilotBridge, LostOdometryInvalidatesTheRouteButHoldsTheHeading) {
   EXPECT_EQ(out.sentences[3].substr(0, 17), "$ECHSC,90.0,T,,M*");  // the set-point course, not a guess
 }
 
+namespace {
+std::string body(const std::string& sentence) {
+  return sentence.substr(0, sentence.find('*'));
+}
+}  // namespace
+
+// A voyage plan from (0, 0): WP001 2 km north, WP002 at (2000, 2500). The ship 100 m east of the first
+// leg, halfway, making the course to its line-of-sight point, WP001 (the leg's end is nearer than the
+// 1 nm lookahead): atan2(-100, 1000) = -5.71 deg, 354.3. By hand: APB cross-track 100 m = 0.054 nm right
+// of the leg, steer left; leg bearing 000.0; to WP001 354.3 at hypot(100, 1000) = 1005 m = 0.54 nm;
+// closing 5 m/s = 9.7 kn.
+TEST(AutopilotBridge, SendsTheRoutesActiveLegWhileTheStackFollowsIt) {
+  asv::AutopilotBridge b(bridgeConfig("hold_course"));
+  b.arm(true);
+  b.own({0.0, 0.0}, 0.0, 5.0, 0.0, 0.0, 0.0);
+  b.route({{0.0, 2000.0}, {2000.0, 2500.0}});
+  const double los = asv::courseOf(Eigen::Vector2d(-100.0, 1000.0));
+  b.setpoint(los, 5.0, 0.1, 0.1, 0.1);
+  b.own({100.0, 1000.0}, los, 5.0, los, 0.1, 0.1);
+  auto out = b.tick(0.2, 0.2, noLatLon);
+  ASSERT_EQ(out.sentences.size(), 4u);
+  EXPECT_EQ(body(out.sentences[0]), "$ECAPB,A,A,0.054,L,N,V,V,0.0,T,WP001,354.3,T,354.3,T,A");
+  EXPECT_EQ(body(out.sentences[1]).substr(0, 27), "$ECRMB,A,0.05,L,WP000,WP001");
+  EXPECT_NE(out.sentences[1].find(",0.5,354.3,9.7,V,A"), std::string::npos) << out.sentences[1];
+  ASSERT_TRUE(out.route_waypoint);
+  EXPECT_EQ(*out.route_waypoint, 0u);
+
+  // An avoiding manoeuvre, 50 deg off the route: the set-point's own leg, started where she is.
+  b.setpoint(asv::degToRad(45.0), 5.0, 0.3, 0.3, 0.3);
+  out = b.tick(0.4, 0.4, noLatLon);
+  EXPECT_EQ(body(out.sentences[0]).substr(0, 37), "$ECAPB,A,A,0.000,R,N,V,V,45.0,T,ASV1,");
+  EXPECT_FALSE(out.route_waypoint);
+
+  // Back on the route abeam of WP001 and past it, at (100, 2050): the second leg, bearing atan2(2000,
+  // 500) = 076.0, from which she is 24.3 m = 0.013 nm left (steer right); WP002 bears 076.7 from her,
+  // and the course to the leg's line-of-sight point 1 nm on is 076.7 too (both by hand).
+  b.own({100.0, 2050.0}, asv::degToRad(76.7), 5.0, asv::degToRad(76.7), 0.5, 0.5);
+  b.setpoint(asv::degToRad(76.71), 5.0, 0.5, 0.5, 0.5);
+  out = b.tick(0.6, 0.6, noLatLon);
+  EXPECT_EQ(body(out.sentences[0]), "$ECAPB,A,A,0.013,R,N,V,V,76.0,T,WP002,76.7,T,76.7,T,A");
+  ASSERT_TRUE(out.route_waypoint);
+  EXPECT_EQ(*out.route_waypoint, 1u);
+
+  // The route withdrawn: the set-point leg again.
+  b.route({});
+  EXPECT_FALSE(b.tick(0.7, 0.7, noLatLon).route_waypoint);
+}
+
 TEST(AutopilotBridge, ConfigNamesABadKey) {
   asv::ParamMap p;
   EXPECT_FALSE(asv::AutopilotBridgeConfig::fromParams(p).origin_lat_deg);  // none: the run's /map_origin
   p.set("origin_lat_deg", 54.6);
   EXPECT_THROW(asv::AutopilotBridgeConfig::fromParams(p), std::invalid_argument);  // half an origin
   p.set("origin_lon_deg", 18.8);
+  p.set("route_tolerance_deg", 0.0);
+  EXPECT_THROW(asv::AutopilotBridgeConfig::fromParams(p), std::invalid_argument);
+  p.set("route_tolerance_deg", 10.0);
   p.setList("sentences", {"APB", "GGA"});
   try {
     asv::AutopilotBridgeConfig::fromParams(p);

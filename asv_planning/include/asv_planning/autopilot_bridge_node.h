@@ -19,6 +19,7 @@
 #include <asv_ros/nmea_output.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 
@@ -31,6 +32,7 @@ public:
 private:
   void cmdCallback(const asv_msgs::CourseSpeedSetpoint::ConstPtr& msg);
   void odomCallback(const nav_msgs::Odometry::ConstPtr& msg);
+  void routeCallback(const nav_msgs::Path::ConstPtr& msg);
   bool armService(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res);
   void tick();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
@@ -43,7 +45,7 @@ private:
   bool publish_twist_ = false;
   std::unique_ptr<asv::AutopilotBridge> bridge_;
   std::unique_ptr<asv_ros::NmeaOutput> output_;
-  ros::Subscriber cmd_sub_, odom_sub_;
+  ros::Subscriber cmd_sub_, odom_sub_, route_sub_;
   ros::Publisher twist_pub_;
   ros::ServiceServer arm_srv_;
   ros::Timer timer_, diag_timer_;
@@ -51,6 +53,7 @@ private:
   std::unique_ptr<asv_ros::AlarmReporter> alarm_;
   asv::AutopilotBridge::Output last_;
   uint64_t ticks_sent_ = 0;
+  size_t route_waypoints_ = 0;  // of the route in force (0: none)
 };
 
 }  // namespace asv_planning

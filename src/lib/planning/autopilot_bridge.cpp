@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "asv_core/codec/gnss.h"
+#include "asv_core/common/format.h"
 #include "asv_core/common/geodesy.h"
 #include "asv_core/common/units.h"
 
@@ -31,6 +32,10 @@ void AutopilotBridgeConfig::validate() const {
     throw std::invalid_argument("safe_action must be hold_course or invalidate");
   if (!(twist_gain >= 0.0) || !(max_yaw_rate > 0.0))
     throw std::invalid_argument("twist_gain must be >= 0 and max_yaw_rate > 0");
+  if (!(route_acceptance > 0.0) || !std::isfinite(route_acceptance))
+    throw std::invalid_argument("route_acceptance must be > 0 m");
+  if (!(route_tolerance > 0.0 && route_tolerance < kPi))
+    throw std::invalid_argument("route_tolerance_deg must be in (0, 180)");
   leg.validate();
   watch.validate();
 }
@@ -52,6 +57,8 @@ AutopilotBridgeConfig AutopilotBridgeConfig::fromParams(const ParamMap& p) {
   c.max_yaw_rate = p.getDouble("max_yaw_rate", c.max_yaw_rate);
   c.leg.lookahead = p.getDouble("lookahead", c.leg.lookahead);
   c.leg.leg_change = degToRad(p.getDouble("leg_change_deg", radToDeg(c.leg.leg_change)));
+  c.route_acceptance = p.getDouble("route_acceptance", c.route_acceptance);
+  c.route_tolerance = degToRad(p.getDouble("route_tolerance_deg", radToDeg(c.route_tolerance)));
   c.watch = InputWatchConfig::fromParams(p, c.watch);
   c.validate();
   return c;
@@ -62,6 +69,21 @@ AutopilotBridge::AutopilotBridge(const AutopilotBridgeConfig& config)
   cfg_.validate();
   watch_.add(kSetpoint);
   watch_.add(kOwn);
+}
+
+void AutopilotBridge::route(const std::vector<Eigen::Vector2d>& waypoints) {
+  Route route;
+  for (const Eigen::Vector2d& w : waypoints)
+    if (allFinite({w.x(), w.y()}))
+      route.push_back({w});
+  progress_ = RouteProgress();
+  pending_route_.clear();
+  if (route.empty())
+    return;
+  if (position_)
+    progress_ = RouteProgress(route, *position_);
+  else
+    pending_route_ = route;
 }
 
 void AutopilotBridge::arm(bool armed) {
@@ -85,6 +107,10 @@ void AutopilotBridge::own(const Eigen::Vector2d& position, double course_over_gr
   if (!allFinite({position.x(), position.y(), course_over_ground, speed, heading}))
     return;
   position_ = position;
+  if (!pending_route_.empty()) {
+    progress_ = RouteProgress(pending_route_, position);
+    pending_route_.clear();
+  }
   cog_ = course_over_ground;
   sog_ = speed;
   heading_ = heading;
@@ -111,13 +137,10 @@ AutopilotBridge::Output AutopilotBridge::tick(
                    ? (invalidate ? "sentences sent invalid (status V): the autopilot drops track mode"
                                  : "the last course is held")
                    : (own_lost ? "no own position: APB, RMB, XTE invalid, HSC holds the last course" : "");
-  autopilot::Steering s;
-  if (position_)
-    s = leg_.update(*course_, *position_, cog_, sog_);
-  else
-    s.bearing_leg = s.bearing_to_dest = s.heading_to_steer = *course_;
+  Eigen::Vector2d destination = Eigen::Vector2d::Zero();
+  autopilot::Steering s = steering(setpoint_lost, &destination, &out.route_waypoint);
   s.valid = !invalidate && !own_lost;
-  to_latlon(leg_.destination(), s.dest_lat_deg, s.dest_lon_deg);
+  to_latlon(destination, s.dest_lat_deg, s.dest_lon_deg);
   for (const std::string& name : cfg_.sentences) {
     if (name == "APB")
       out.sentences.push_back(autopilot::encodeApb(s, cfg_.talker));
@@ -136,6 +159,47 @@ AutopilotBridge::Output AutopilotBridge::tick(
     out.yaw_rate = -std::clamp(cfg_.twist_gain * error, -cfg_.max_yaw_rate, cfg_.max_yaw_rate);
   }
   return out;
+}
+
+autopilot::Steering AutopilotBridge::steering(bool setpoint_lost, Eigen::Vector2d* destination,
+                                              std::optional<size_t>* route_waypoint) {
+  autopilot::Steering s;
+  if (!position_) {
+    s.bearing_leg = s.bearing_to_dest = s.heading_to_steer = *course_;
+    *destination = leg_.destination();
+    return s;
+  }
+  // A lost set-point holds the last course on its own leg: the route is no longer being steered.
+  if (const std::optional<autopilot::Steering> r = setpoint_lost ? std::nullopt : routeSteering(*course_)) {
+    leg_.reset();  // back off the route, a new set-point leg starts from where the ship is then
+    *destination = progress_.target().position;
+    *route_waypoint = progress_.active();
+    return *r;
+  }
+  s = leg_.update(*course_, *position_, cog_, sog_);
+  *destination = leg_.destination();
+  return s;
+}
+
+std::optional<autopilot::Steering> AutopilotBridge::routeSteering(double setpoint_course) {
+  if (progress_.empty())
+    return std::nullopt;
+  // No wheel-over here (turn rate 0): the waypoint is passed within route_acceptance or abeam.
+  progress_.update(*position_, sog_, 0.0, cfg_.route_acceptance);
+  const Eigen::Vector2d p = *position_, a = progress_.legStart(), b = progress_.target().position;
+  const Eigen::Vector2d los = progress_.lineOfSight(p, cfg_.leg.lookahead);
+  if ((los - p).norm() < 1e-6 || std::abs(wrapPi(setpoint_course - courseOf(los - p))) > cfg_.route_tolerance)
+    return std::nullopt;
+  autopilot::Steering s;
+  s.cross_track = progress_.crossTrackError(p);  // > 0 to starboard of the leg, as APB/XTE want
+  s.bearing_leg = trueBearing(a, b);
+  s.bearing_to_dest = trueBearing(p, b);
+  s.heading_to_steer = setpoint_course;  // the stack's own steering back onto the leg
+  s.range_to_dest = (b - p).norm();
+  s.closing_speed = sog_ * std::cos(cog_ - s.bearing_to_dest);
+  s.origin_id = strFormat("WP%03zu", progress_.active());
+  s.dest_id = strFormat("WP%03zu", progress_.active() + 1);
+  return s;
 }
 
 }  // namespace asv
