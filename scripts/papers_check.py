@@ -11,7 +11,7 @@ Checks:
              papers; every kind is reproduced, calibration or self_check, and the rows that compare
              with our own numbers (Hu et al.'s closest approaches against our d_min, the flag time from
              our geometry, Fig. 6's inferred side) are self_check and the rows Hirayama et al.'s Table 1
-             geometry is fitted to are calibration;
+             geometry and Lazarowska's paper-mode grid cell are fitted to are calibration;
   claims     the rows the results pages say we reproduce are within tolerance: Hu et al. Fig. 4(a)/(b)
              sides and Fig. 6 (flag at 300 s by hand, no alteration before it, evasion at once),
              Hirayama et al. Table 3 DSSA and Table 2 DSSA+ s=c and s>c success counts, Lazarowska Scenario 1's
@@ -48,6 +48,8 @@ CALIBRATIONS = [
     ("Hirayama et al. 2019", "Table 1, DSSA", "total length of paths"),  # the two ships' offset
     ("Hirayama et al. 2019", "Table 1, DSSA", "detour rate of each ship"),
     ("Hirayama et al. 2019", "Table 1, DSSA+ s>c", "total length of paths"),  # their straight length
+    ("Lazarowska 2015", "Scenario 1 (Table 3)", "alteration 1 [deg, + starboard] (planned)"),  # the grid cell
+    ("Lazarowska 2015", "Scenario 1 (Table 3)", "alteration 2 [deg, + starboard] (planned)"),
 ]
 CLAIMS = [
     ("Hu et al. 2017", "Fig. 4(a) overtaking, open water", "avoiding alterations, sides in order"),

@@ -1,5 +1,7 @@
 #include "asv_planning/autopilot_bridge_node.h"
 
+#include <cmath>
+
 #include <asv_core/common/units.h>
 #include <asv_core/world/scenario.h>
 #include <asv_ros/conversions.h>
@@ -92,7 +94,10 @@ void AutopilotBridgeNode::routeCallback(const nav_msgs::Path::ConstPtr& msg) {
   }
   std::vector<Eigen::Vector2d> route;
   for (const auto& p : msg->poses)
-    route.emplace_back(p.pose.position.x, p.pose.position.y);
+    if (std::isfinite(p.pose.position.x) && std::isfinite(p.pose.position.y))
+      route.emplace_back(p.pose.position.x, p.pose.position.y);
+  if (route.size() != msg->poses.size())
+    ROS_WARN("autopilot_bridge: %zu route waypoint(s) not finite: dropped", msg->poses.size() - route.size());
   bridge_->route(route);
   route_waypoints_ = route.size();
   ROS_INFO("autopilot_bridge: route of %zu waypoint(s): its active leg is sent while the ship follows it",

@@ -12,11 +12,11 @@
 //    N, no HSC, and an ERROR alarm naming the set-point;
 //  - disarmed again: nothing.
 //  - a route on active_route (latched, map): from (0, 0), where the ship is when it comes, to WP001
-//    3000 m east. The ship at (1000, 100) on set-point 090, within 10 deg of the course to the leg's
-//    line-of-sight point (atan2(1852, -100) = 93.1): the route's leg, WP000 -> WP001, bearing 090.0,
-//    cross-track 0.054 nm steer right, WP001 bearing atan2(2000, -100) = 92.9 at 2002 m = 1.08 nm, heading
-//    to steer the set-point 090.0; RMB's destination 3000 m east: 3000 / (N cos 54.6 deg) = 0.046419
-//    deg = 2.7851' east, 018 50.7851' E.
+//    3000 m east. The ship at (1000, 100) on set-point 108.4, the follower's line of sight to 300 m
+//    ahead of her abeam point (atan2(300, -100) = 108.4): the route's leg, WP000 -> WP001, bearing
+//    090.0, cross-track 0.054 nm steer right, WP001 bearing atan2(2000, -100) = 92.9 at 2002 m = 1.08
+//    nm, heading to steer the set-point 108.4; RMB's destination 3000 m east: 3000 / (N cos 54.6 deg) =
+//    0.046419 deg = 2.7851' east, 018 50.7851' E.
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
@@ -64,7 +64,7 @@ protected:
 
   // Feeds odometry at (x, y) heading east at 5 m/s (and the set-point 090 when `cmd`) at 20 Hz for
   // `seconds`, returning the sentences received meanwhile.
-  std::vector<std::string> run(double x, double y, bool cmd, double seconds) {
+  std::vector<std::string> run(double x, double y, bool cmd, double seconds, double course_deg = 90.0) {
     std::vector<std::string> got;
     const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
     while (ros::WallTime::now() < end) {
@@ -79,7 +79,7 @@ protected:
       if (cmd) {
         asv_msgs::CourseSpeedSetpoint c;
         c.header.stamp = ros::Time::now();
-        c.course = M_PI / 2;
+        c.course = course_deg * M_PI / 180.0;
         c.speed = 5.0;
         cmd_.publish(c);
       }
@@ -180,7 +180,7 @@ TEST_F(BridgeTest, ARouteInForceIsSentAsItsOwnLeg) {
   route.publish(path);
   run(0.0, 0.0, true, 1.0);
   ASSERT_TRUE(arm(true));
-  const std::vector<std::string> got = run(1000.0, 100.0, true, 1.5);
+  const std::vector<std::string> got = run(1000.0, 100.0, true, 1.5, 108.435);
   const auto apb = ofType(got, "APB");
   ASSERT_FALSE(apb.empty());
   const auto a = fields(apb.back());
@@ -190,7 +190,7 @@ TEST_F(BridgeTest, ARouteInForceIsSentAsItsOwnLeg) {
   EXPECT_EQ(a[8], "90.0");
   EXPECT_EQ(a[10], "WP001");
   EXPECT_EQ(a[11], "92.9");
-  EXPECT_EQ(a[13], "90.0");
+  EXPECT_EQ(a[13], "108.4");
   const auto r = fields(ofType(got, "RMB").back());
   ASSERT_GE(r.size(), 15u);
   EXPECT_EQ(r[4], "WP000");

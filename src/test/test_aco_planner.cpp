@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "asv_core/eval/evaluation.h"
@@ -132,8 +133,11 @@ TEST(AcoConfig, PaperModeIsTheSquareGridWithLongEdgesAndThePrintedStep3) {
   const AcoConfig sea;
   EXPECT_FALSE(sea.long_edges);
   EXPECT_FALSE(sea.danger_by_course);
+  pm.set("lateral_steps", 5.0);  // long edges of 32 rows x 5 columns: too wide a neighbourhood
+  EXPECT_THROW(AcoConfig::fromParams(pm), std::invalid_argument);
   pm.set("long_edges", "false");
   EXPECT_FALSE(AcoConfig::fromParams(pm).long_edges);  // the keys override the mode
+  EXPECT_EQ(AcoConfig::fromParams(pm).lateral_steps, 5);
 }
 
 TEST(AcoConfig, FromParamsConvertsUnitsAndRejectsUnknownKeys) {

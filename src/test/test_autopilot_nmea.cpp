@@ -200,45 +200,64 @@ std::string body(const std::string& sentence) {
 }  // namespace
 
 // A voyage plan from (0, 0): WP001 2 km north, WP002 at (2000, 2500). The ship 100 m east of the first
-// leg, halfway, making the course to its line-of-sight point, WP001 (the leg's end is nearer than the
-// 1 nm lookahead): atan2(-100, 1000) = -5.71 deg, 354.3. By hand: APB cross-track 100 m = 0.054 nm right
-// of the leg, steer left; leg bearing 000.0; to WP001 354.3 at hypot(100, 1000) = 1005 m = 0.54 nm;
-// closing 5 m/s = 9.7 kn.
+// leg, halfway, making the follower's line-of-sight course, to the point 300 m (2 x 150 m acceptance)
+// ahead of her abeam point: atan2(-100, 300) = -18.4 deg, 341.6. By hand: APB cross-track 100 m =
+// 0.054 nm right of the leg, steer left; leg bearing 000.0; WP001 bears atan2(-100, 1000) = 354.3 at
+// hypot(100, 1000) = 1005 m = 0.54 nm; closing 5 cos(12.7 deg) = 4.88 m/s = 9.5 kn.
 TEST(AutopilotBridge, SendsTheRoutesActiveLegWhileTheStackFollowsIt) {
   asv::AutopilotBridge b(bridgeConfig("hold_course"));
   b.arm(true);
   b.own({0.0, 0.0}, 0.0, 5.0, 0.0, 0.0, 0.0);
   b.route({{0.0, 2000.0}, {2000.0, 2500.0}});
-  const double los = asv::courseOf(Eigen::Vector2d(-100.0, 1000.0));
+  const double los = asv::courseOf(Eigen::Vector2d(-100.0, 300.0));
   b.setpoint(los, 5.0, 0.1, 0.1, 0.1);
   b.own({100.0, 1000.0}, los, 5.0, los, 0.1, 0.1);
   auto out = b.tick(0.2, 0.2, noLatLon);
   ASSERT_EQ(out.sentences.size(), 4u);
-  EXPECT_EQ(body(out.sentences[0]), "$ECAPB,A,A,0.054,L,N,V,V,0.0,T,WP001,354.3,T,354.3,T,A");
+  EXPECT_EQ(body(out.sentences[0]), "$ECAPB,A,A,0.054,L,N,V,V,0.0,T,WP001,354.3,T,341.6,T,A");
   EXPECT_EQ(body(out.sentences[1]).substr(0, 27), "$ECRMB,A,0.05,L,WP000,WP001");
-  EXPECT_NE(out.sentences[1].find(",0.5,354.3,9.7,V,A"), std::string::npos) << out.sentences[1];
+  EXPECT_NE(out.sentences[1].find(",0.5,354.3,9.5,V,A"), std::string::npos) << out.sentences[1];
+  // The course to WP001 itself, 12.7 deg from the follower's, is not the route's: she is manoeuvring.
+  b.setpoint(asv::courseOf(Eigen::Vector2d(-100.0, 1000.0)), 5.0, 0.15, 0.15, 0.15);
+  EXPECT_FALSE(b.tick(0.2, 0.2, noLatLon).route_waypoint);
   ASSERT_TRUE(out.route_waypoint);
   EXPECT_EQ(*out.route_waypoint, 0u);
 
   // An avoiding manoeuvre, 50 deg off the route: the set-point's own leg, started where she is.
   b.setpoint(asv::degToRad(45.0), 5.0, 0.3, 0.3, 0.3);
   out = b.tick(0.4, 0.4, noLatLon);
-  EXPECT_EQ(body(out.sentences[0]).substr(0, 37), "$ECAPB,A,A,0.000,R,N,V,V,45.0,T,ASV1,");
+  EXPECT_EQ(body(out.sentences[0]).substr(0, 35), "$ECAPB,A,A,0.000,R,N,V,V,45.0,T,ASV");
   EXPECT_FALSE(out.route_waypoint);
 
   // Back on the route abeam of WP001 and past it, at (100, 2050): the second leg, bearing atan2(2000,
   // 500) = 076.0, from which she is 24.3 m = 0.013 nm left (steer right); WP002 bears 076.7 from her,
-  // and the course to the leg's line-of-sight point 1 nm on is 076.7 too (both by hand).
-  b.own({100.0, 2050.0}, asv::degToRad(76.7), 5.0, asv::degToRad(76.7), 0.5, 0.5);
-  b.setpoint(asv::degToRad(76.71), 5.0, 0.5, 0.5, 0.5);
+  // and the line-of-sight point 300 m on bears 080.6 (both by hand).
+  b.own({100.0, 2050.0}, asv::degToRad(80.6), 5.0, asv::degToRad(80.6), 0.5, 0.5);
+  b.setpoint(asv::degToRad(80.6), 5.0, 0.5, 0.5, 0.5);
   out = b.tick(0.6, 0.6, noLatLon);
-  EXPECT_EQ(body(out.sentences[0]), "$ECAPB,A,A,0.013,R,N,V,V,76.0,T,WP002,76.7,T,76.7,T,A");
+  EXPECT_EQ(body(out.sentences[0]), "$ECAPB,A,A,0.013,R,N,V,V,76.0,T,WP002,76.7,T,80.6,T,A");
   ASSERT_TRUE(out.route_waypoint);
   EXPECT_EQ(*out.route_waypoint, 1u);
 
   // The route withdrawn: the set-point leg again.
   b.route({});
   EXPECT_FALSE(b.tick(0.7, 0.7, noLatLon).route_waypoint);
+}
+
+// A route that comes before any position starts where the first position puts the ship: from (0, 0)
+// to WP001 3000 m east, the ship then at (1000, 100) on the follower's course atan2(300, -100) = 108.4:
+// WP000 -> WP001, bearing 090.0, 100 m = 0.054 nm north of it (left of an eastward leg: steer right).
+TEST(AutopilotBridge, ARouteBeforeAnyPositionStartsAtTheFirstOne) {
+  asv::AutopilotBridge b(bridgeConfig("hold_course"));
+  b.arm(true);
+  b.route({{3000.0, 0.0}, {std::nan(""), 0.0}});  // the non-finite waypoint is dropped
+  const double los = asv::courseOf(Eigen::Vector2d(300.0, -100.0));
+  b.setpoint(los, 5.0, 0.0, 0.0, 0.0);
+  b.own({0.0, 0.0}, asv::degToRad(90.0), 5.0, asv::degToRad(90.0), 0.0, 0.0);
+  b.own({1000.0, 100.0}, los, 5.0, los, 0.1, 0.1);
+  const auto out = b.tick(0.2, 0.2, noLatLon);
+  ASSERT_TRUE(out.route_waypoint);
+  EXPECT_EQ(body(out.sentences[0]).substr(0, 41), "$ECAPB,A,A,0.054,R,N,V,V,90.0,T,WP001,92.");
 }
 
 TEST(AutopilotBridge, ConfigNamesABadKey) {
@@ -250,6 +269,9 @@ TEST(AutopilotBridge, ConfigNamesABadKey) {
   p.set("route_tolerance_deg", 0.0);
   EXPECT_THROW(asv::AutopilotBridgeConfig::fromParams(p), std::invalid_argument);
   p.set("route_tolerance_deg", 10.0);
+  p.set("route_turn_rate_deg_s", 0.0);
+  EXPECT_THROW(asv::AutopilotBridgeConfig::fromParams(p), std::invalid_argument);
+  p.set("route_turn_rate_deg_s", 1.0);
   p.setList("sentences", {"APB", "GGA"});
   try {
     asv::AutopilotBridgeConfig::fromParams(p);

@@ -34,6 +34,8 @@ void AutopilotBridgeConfig::validate() const {
     throw std::invalid_argument("twist_gain must be >= 0 and max_yaw_rate > 0");
   if (!(route_acceptance > 0.0) || !std::isfinite(route_acceptance))
     throw std::invalid_argument("route_acceptance must be > 0 m");
+  if (!(route_turn_rate > 0.0) || !std::isfinite(route_turn_rate))
+    throw std::invalid_argument("route_turn_rate_deg_s must be > 0");
   if (!(route_tolerance > 0.0 && route_tolerance < kPi))
     throw std::invalid_argument("route_tolerance_deg must be in (0, 180)");
   leg.validate();
@@ -59,6 +61,7 @@ AutopilotBridgeConfig AutopilotBridgeConfig::fromParams(const ParamMap& p) {
   c.leg.leg_change = degToRad(p.getDouble("leg_change_deg", radToDeg(c.leg.leg_change)));
   c.route_acceptance = p.getDouble("route_acceptance", c.route_acceptance);
   c.route_tolerance = degToRad(p.getDouble("route_tolerance_deg", radToDeg(c.route_tolerance)));
+  c.route_turn_rate = degToRad(p.getDouble("route_turn_rate_deg_s", radToDeg(c.route_turn_rate)));
   c.watch = InputWatchConfig::fromParams(p, c.watch);
   c.validate();
   return c;
@@ -184,10 +187,9 @@ autopilot::Steering AutopilotBridge::steering(bool setpoint_lost, Eigen::Vector2
 std::optional<autopilot::Steering> AutopilotBridge::routeSteering(double setpoint_course) {
   if (progress_.empty())
     return std::nullopt;
-  // No wheel-over here (turn rate 0): the waypoint is passed within route_acceptance or abeam.
-  progress_.update(*position_, sog_, 0.0, cfg_.route_acceptance);
+  progress_.update(*position_, sog_, cfg_.route_turn_rate, cfg_.route_acceptance);
   const Eigen::Vector2d p = *position_, a = progress_.legStart(), b = progress_.target().position;
-  const Eigen::Vector2d los = progress_.lineOfSight(p, cfg_.leg.lookahead);
+  const Eigen::Vector2d los = progress_.lineOfSight(p, kLineOfSightLookahead * cfg_.route_acceptance);
   if ((los - p).norm() < 1e-6 || std::abs(wrapPi(setpoint_course - courseOf(los - p))) > cfg_.route_tolerance)
     return std::nullopt;
   autopilot::Steering s;

@@ -19,10 +19,6 @@
 namespace asv {
 
 namespace {
-// Past the plan the ship steers for a point this many waypoint acceptance radii ahead on the active leg
-// (300 m by default): a line-of-sight lookahead of a few ship lengths, which brings her back onto the
-// leg at about 18 deg from 100 m off it. Our choice.
-constexpr double kLineOfSightLookahead = 2.0;
 // Over this last stretch of the route the line of sight comes back from the starboard lane of a narrow
 // fairway to the goal, so that the ship arrives at it (a berth need not lie on the lane). Our choice:
 // 600 m, two lookaheads.

@@ -12,8 +12,8 @@
 // and a twist (forward speed and yaw rate towards the heading to steer) for a vehicle driven by
 // geometry_msgs/TwistStamped.
 // With a voyage plan in force (route()), the leg sent while the stack steers along the route is the
-// route's active leg: origin and destination its waypoints (named as plotter_node sends the route to
-// the chart plotter: WP000 where the ship was given the route, WP001 its first waypoint, ...), the
+// route's active leg: origin and destination its waypoints (WP001 its first waypoint, ..., as
+// plotter_node names them for the chart plotter; WP000 where the ship was given the route), the
 // cross-track error from that leg, the range and bearing to its real waypoint. While the stack steers
 // off the route (an avoiding manoeuvre), the leg of the set-point is sent, as without a route.
 #pragma once
@@ -50,12 +50,17 @@ struct AutopilotBridgeConfig {
   double twist_gain = 0.5;     // [1/s] yaw rate per radian of heading error
   double max_yaw_rate = 0.05;  // [rad/s] (about 3 deg/s)
   autopilot::LegConfig leg;    // lookahead, leg_change_deg
-  // [m] key route_acceptance: a route waypoint this close is passed (so is one abeam or astern); the
-  // default is planner_node's waypoint_acceptance, so that both pass a waypoint at the same place.
+  // [m] key route_acceptance: a route waypoint this close is passed, as is one at its wheel-over point
+  // (route_turn_rate_deg_s) or abeam; the default is planner_node's waypoint_acceptance, so that with
+  // the ship's turn rate the bridge and the follower pass a waypoint at the same place.
   double route_acceptance = PlanFollowerConfig().waypoint_acceptance;
-  // [rad] key route_tolerance_deg: the set-point follows the route while it is within this of the course
-  // to the route leg's line-of-sight point (lookahead ahead of the ship's abeam point); farther off, the
-  // stack is manoeuvring and the set-point's leg is sent. Default 10 deg.
+  // [rad/s] key route_turn_rate_deg_s: the ship's rate of turn, for the wheel-over point. Default 1
+  // deg/s, OwnShipLimits' (planner_node's limits/turn_rate_deg_s where it is set).
+  double route_turn_rate = OwnShipLimits().turn_rate;
+  // [rad] key route_tolerance_deg: the set-point follows the route while it is within this of the
+  // course to the follower's line-of-sight point on the active leg (kLineOfSightLookahead x
+  // route_acceptance ahead of the ship's abeam point: where planner_node steers her back onto it);
+  // farther off, the stack is manoeuvring and the set-point's leg is sent. Default 10 deg.
   double route_tolerance = degToRad(10.0);
   // watch/*: set-points (1 Hz from planner_node) and odometry stale after watch/input_timeout (3 s: a plan
   // may hold the set-point job up by a second)

@@ -33,6 +33,11 @@
 
 namespace asv {
 
+// Past the plan the ship steers for a point this many waypoint acceptance radii ahead on the active leg
+// (300 m by default): a line-of-sight lookahead of a few ship lengths, which brings her back onto the
+// leg at about 18 deg from 100 m off it. Our choice.
+constexpr double kLineOfSightLookahead = 2.0;
+
 // Field names and defaults are planner_node's parameters (asv_planning/config/planner_node.yaml).
 struct PlanFollowerConfig {
   double cruise_speed = 0.0;           // [m/s] 0: the own speed at the first update (at least 0.5 m/s)

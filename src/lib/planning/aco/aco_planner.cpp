@@ -16,8 +16,11 @@ namespace asv {
 namespace {
 
 constexpr int kMaxLateralSteps = 16;
-constexpr int kMaxRows = 1000;        // keeps the lattice (and the pheromone table) bounded
-constexpr int kMaxLongEdgeRows = 32;  // longest long edge in rows: bounds the neighbourhood (~3000)
+constexpr int kMaxRows = 1000;  // keeps the lattice (and the pheromone table) bounded
+// Longest long edge in rows: with lateral_steps <= kMaxLongEdgeSteps it bounds the neighbourhood of a
+// vertex to 32 x (32 K + 1) + 32 options (1088 for K = 1, 4192 for K = 4).
+constexpr int kMaxLongEdgeRows = 32;
+constexpr int kMaxLongEdgeSteps = 4;
 // Paper mode's grid cell [m] (square; AcoConfig::paper): see the header's long_edges.
 constexpr double kLazarowskaCell = 0.75 * 1852.0;
 constexpr double kStraightTol = 1e-9;   // [rad] course change below which a leg continues the last
@@ -56,6 +59,7 @@ void AcoConfig::validate() const {
   require(std::isfinite(column_spacing) && column_spacing > 0.0, "column_spacing_m must be > 0");
   require(lateral_steps >= 1 && lateral_steps <= kMaxLateralSteps, "lateral_steps must be in 1..16");
   require(std::isfinite(half_width) && half_width >= 0.0, "half_width_m must be >= 0");
+  require(!long_edges || lateral_steps <= kMaxLongEdgeSteps, "lateral_steps must be in 1..4 with long_edges");
   require(std::isfinite(max_alteration) && max_alteration > 0.0 && max_alteration <= degToRad(120.0) + 1e-12,
           "max_alteration_deg must be in (0, 120]");
   require(std::isfinite(min_first_alteration) && min_first_alteration >= 0.0 &&
@@ -639,7 +643,7 @@ private:
   std::vector<double> tau_;
   std::mt19937_64 rng_;
   std::vector<Option> first_;            // the first step's feasible moves, the same for every ant
-  std::vector<std::vector<int>> walks_;  // this iteration's walks (empty: the ant died)
+  std::vector<std::vector<int>> walks_;  // this iteration's walks (partial when walk_len_ is -1: died)
   std::vector<double> walk_len_;
   std::vector<int> best_walk_;
   double best_len_ = std::numeric_limits<double>::infinity();

@@ -62,10 +62,11 @@ struct AcoConfig {
   double half_width = 3.0 * 1852.0;  // [m] key half_width_m: cross-track extent of the lattice on
                                      // each side of the base line, inside the eq. (1) bounds when
                                      // those are given. Default 3 nm.
-  // Key long_edges: an ant may move from row i to any later row i + r, at most r * lateral_steps
-  // columns sideways (the same widest leg direction), instead of to row i + 1 only. With eta = 1 /
-  // edge length (2.3.2) the summed weight of each later row is about the same, so a walk is a few long
-  // legs (~ln(rows)). Paper mode's graph, our reading of the lost Fig. 6: square cells of 0.75 nm,
+  // Key long_edges: an ant may move from row i to any later row i + r (r <= 32), at most r *
+  // lateral_steps columns sideways (the same widest leg direction; lateral_steps <= 4), instead of to
+  // row i + 1 only. With eta = 1 / edge length (2.3.2) the summed weight of each later row is about the
+  // same, so a walk is a few long legs (~ln(rows)). Paper mode's graph, our reading of the lost Fig. 6:
+  // cells of 0.75 nm (square when wp_e is a whole number of cells out; rows shrink to fit otherwise),
   // lateral_steps 1 (legs up to 45 deg off the base line), long edges. Why: every course the paper
   // prints is a grid slope off its base line, atan(1/5) = 11.3, atan(1/4) = 14.0, atan(1/3) = 18.4 deg
   // (Scenario 1: 077, 052 from 066; Scenario 2: 050, 079 from 061), and Scenario 1's answer, cells
