@@ -41,9 +41,10 @@ _WIDE = (f"paper mode decides once, when TS1's CRI passes {THRESHOLD} at about 4
 _CRI_AFTER = ("eq. (1) as printed, after the CPA (Fig. 9 plots it so; the planner's trigger value is 0 there, Fig. 3): "
               "it falls with TS1's speed, which the paper does not give (\"TS1's speed\" below); at our 3 kn and "
               "wider pass it is lower than the paper's")
-_CROSSING = ("after the head-on turn the ASV steers for the goal from east of the reconstructed track, so TS2 and TS3 "
-             "meet her wider than reconstructed (the paper gives neither their positions nor their speeds): neither "
-             f"CRI reaches {THRESHOLD} (TS3's comes close), and no decision is taken at 447 s")
+_CROSSING = ("run from the paper's stated state at 447 s (the table below; the bearings and speeds are ours, the paper "
+             "gives neither): our eq. (1) rates TS2, 150 m off and crossing ahead, above TS3, so the GA weighs both at "
+             "once (the paper decides on TS3 first and on TS2 at 465 s), and the heading of least summed CRI lies at "
+             "the edge of the coding space [-90, 90]: the ASV turns wider than the paper's and TS3 passes wider")
 _OVERTAKING = (f"TS4's CRI passes {THRESHOLD} a little before 800 s and the ASV decides then; the angle of least CRI for our "
                "reconstruction of TS4 (5 kn on 010: the paper gives neither) is smaller than the paper's, and the ASV, "
                "east of the reconstructed track after the head-on turn, passes wider")
@@ -77,12 +78,68 @@ def _head_on(kn, workdir):
     return path
 
 
+# The crossing from the state the paper gives at its decision (Sec. 4.2): at 447 s the ASV heads -8 deg
+# (352), TS2 (heading 270) is 150 m and TS3 (heading 090) 310 m from her. The run starts there (t = 0 is
+# the paper's 447 s): started a minute earlier, our TS2 passes the threshold first and the ASV turns
+# before 447 s, so the stated state is never reached. The bearings are not given, so they are our
+# reconstruction's (TS3 on a collision course, TS2 crossing ahead of her 15 s early), now about the ASV
+# on 352, at the reconstruction's 5 kn.
+CROSSING_LEAD = 0.0  # [s] from the start of the run to the stated state
+CROSSING_HEADING = 352.0
+
+
+def _velocity(course_deg, speed):
+    import math
+    c = math.radians(course_deg)
+    return (speed * math.sin(c), speed * math.cos(c))
+
+
+def _meeting(v_own, v_t, t_meet, lead):
+    """Where a target (velocity v_t) is when it meets the ASV (at the origin, velocity v_own) after t_meet s,
+    shifted `lead` s along its track (lead > 0: it crosses ahead)."""
+    return (v_own[0] * t_meet - v_t[0] * (t_meet - lead), v_own[1] * t_meet - v_t[1] * (t_meet - lead))
+
+
+def _crossing(workdir):
+    """wu_port's crossing alone, from the paper's stated state at the decision (CROSSING_LEAD s later)."""
+    import math
+    with open(os.path.join(common.SCENARIOS, "wu_port.yaml")) as f:
+        sc = yaml.safe_load(f)
+    v_own = _velocity(CROSSING_HEADING, sc["own_ship"]["speed_mps"])
+    at = {}
+    for t in sc["targets"]:
+        if t["name"] not in ("ts2", "ts3"):
+            continue
+        v_t = _velocity(t["course_deg"], t["speed_kn"] * 1852.0 / 3600.0)
+        rng, lead = (310.0, 0.0) if t["name"] == "ts3" else (150.0, 15.0)
+        lo, hi = 0.0, 600.0  # the meeting time that puts the target rng metres away now
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            (lo, hi) = (mid, hi) if math.hypot(*_meeting(v_own, v_t, mid, lead)) < rng else (lo, mid)
+        p = _meeting(v_own, v_t, 0.5 * (lo + hi), lead)
+        t["position"] = {"x_m": round(p[0] - v_t[0] * CROSSING_LEAD, 2), "y_m": round(p[1] - v_t[1] * CROSSING_LEAD, 2)}
+        at[t["name"]] = t
+    start = (-v_own[0] * CROSSING_LEAD, -v_own[1] * CROSSING_LEAD)
+    ahead = _velocity(CROSSING_HEADING, 3000.0)
+    sc["name"] = "wu_crossing_stated"
+    sc["duration_s"] = 400
+    sc["own_ship"]["position"] = {"x_m": round(start[0], 2), "y_m": round(start[1], 2)}
+    sc["own_ship"]["course_deg"] = CROSSING_HEADING
+    sc["own_ship"]["goal"] = {"x_m": round(start[0] + ahead[0], 2), "y_m": round(start[1] + ahead[1], 2)}
+    sc["targets"] = [at["ts2"], at["ts3"]]
+    path = os.path.join(workdir, sc["name"])
+    with open(path + ".yaml", "w") as f:
+        yaml.safe_dump(sc, f, sort_keys=False)
+    return path
+
+
 def jobs(mode="paper"):
     out = [Job("ga_wu_port_%s" % m, "wu_port", "ga", sets=["ga.mode=" + m], risk=True, sample=1.0)
            for m in (mode, "sea")]
     work = tempfile.mkdtemp(prefix="asv_papers_ga_")
     out += [Job("ga_head_on_%gkn" % kn, _head_on(kn, work), "ga", sets=["ga.mode=" + mode], risk=True, sample=1.0)
             for kn in TS1_SPEEDS]
+    out.append(Job("ga_crossing_stated", _crossing(work), "ga", sets=["ga.mode=" + mode], risk=True, sample=1.0))
     return out
 
 
@@ -129,6 +186,28 @@ def first_alteration(run, t0, window):
     return None
 
 
+CROSSING = "crossing TS2 + TS3"
+
+
+def _crossing_rows(job):
+    """The crossing's rows from the run that starts at the paper's stated state (t = 0 is its 447 s)."""
+    r, risk = job.runs[0], job.risk_rows
+    dist = {t["name"]: t["min_distance_m"] for t in r["targets"]}
+    alt = first_alteration(r, CROSSING_LEAD, 90.0)
+    paper = next(p for lab, _, _, p in ENCOUNTERS if lab == CROSSING)
+    rows = [band_row(PAPER, CROSSING, "steering [deg, + starboard]", paper,
+                     alt["course_change_deg"] if alt else None, ANGLE_BAND, "deg")]
+    rows += [band_row(PAPER, CROSSING, "closest distance to %s [m]" % name.upper(), p, dist[name], DIST_BAND, "m")
+             for lab, name, p in CLOSEST if lab == CROSSING]
+    rows.append(exact_row(PAPER, CROSSING, f"CRI of TS3 above {THRESHOLD} at 447 s", True,
+                          (cri_at(risk, "ts3", CROSSING_LEAD, "cri") or 0.0) > THRESHOLD))
+    line = "| %s, from the stated state at 447 s | paper | %s | %s | ts2 %.2f, ts3 %.2f @ 447 s |" % (
+        CROSSING, "%+.1f deg @ %.0f s" % (alt["course_change_deg"], alt["t_s"] + 447.0 - CROSSING_LEAD) if alt
+        else "none", ", ".join("%s %.1f m" % (n, dist[n]) for lab, n, _ in CLOSEST if lab == CROSSING),
+        cri_at(risk, "ts2", CROSSING_LEAD, "cri"), cri_at(risk, "ts3", CROSSING_LEAD, "cri"))
+    return rows, line
+
+
 def report(done, mode="paper"):
     rows = []
     lines = ["| encounter | mode | first alteration (+ starboard) | closest approach | CRI at the paper's instants |",
@@ -144,19 +223,21 @@ def report(done, mode="paper"):
             lines.append("| %s | %s | %s | %s | %s |" % (
                 label, m, "%+.1f deg @ %.0f s" % (alt["course_change_deg"], alt["t_s"]) if alt else "none",
                 closest, cris or "-"))
-            if m == mode:
+            if m == mode and label != CROSSING:
                 rows.append(band_row(PAPER, label, "steering [deg, + starboard]", paper,
                                      alt["course_change_deg"] if alt else None, ANGLE_BAND, "deg"))
         if m == mode:
+            crossing_rows, crossing_line = _crossing_rows(done["ga_crossing_stated"])
+            rows += crossing_rows
+            lines.append(crossing_line)
             for label, name, paper in CLOSEST:
-                rows.append(band_row(PAPER, label, "closest distance to %s [m]" % name.upper(), paper, dist[name],
-                                     DIST_BAND, "m"))
+                if label != CROSSING:
+                    rows.append(band_row(PAPER, label, "closest distance to %s [m]" % name.upper(), paper,
+                                         dist[name], DIST_BAND, "m"))
             for label, name, t, paper in CRI_AT:
                 rows.append(band_row(PAPER, label, "CRI (eq. 1) of %s at %.0f s" % (name.upper(), t), paper,
                                      cri_at(risk, name, t), CRI_BAND))
             rows.append(band_row(PAPER, "head-on TS1", f"range of TS1 when its CRI first exceeds {THRESHOLD} [m]",
                                  DECISION_RANGE, first_above(risk, "ts1", THRESHOLD), DIST_BAND, "m"))
-            rows.append(exact_row(PAPER, "crossing TS2 + TS3", f"CRI of TS3 above {THRESHOLD} at 447 s", True,
-                                  (cri_at(risk, "ts3", 447.0, "cri") or 0.0) > THRESHOLD))
             rows.append(exact_row(PAPER, "all", "collision-free", True, not r["collision"]))
     return rows, lines + [""] + _speed_table(done)
