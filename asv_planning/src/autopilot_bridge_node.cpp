@@ -100,8 +100,11 @@ void AutopilotBridgeNode::routeCallback(const nav_msgs::Path::ConstPtr& msg) {
     ROS_WARN("autopilot_bridge: %zu route waypoint(s) not finite: dropped", msg->poses.size() - route.size());
   bridge_->route(route);
   route_waypoints_ = route.size();
-  ROS_INFO("autopilot_bridge: route of %zu waypoint(s): its active leg is sent while the ship follows it",
-           route.size());
+  if (route.empty())
+    ROS_INFO("autopilot_bridge: no route in force: the set-point's leg is sent");
+  else
+    ROS_INFO("autopilot_bridge: route of %zu waypoint(s): its active leg is sent while the ship follows it",
+             route.size());
 }
 
 bool AutopilotBridgeNode::armService(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res) {

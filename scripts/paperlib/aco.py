@@ -38,12 +38,6 @@ _S2_SHORTER = ("the shortest path on our grid goes from the end of the paper's f
                "must block the leg in a way the text does not give")
 
 
-def _tie(cells, courses):
-    return ("a tie: the mirror image of the shortest grid path (the two legs' cells swapped, %s) is as long but "
-            "for the turn model's first leg (metres), and seed 1's colony found it and not the shortest" % cells +
-            ("; the commonest route of the seeds below is the shortest, %s" % courses))
-
-
 _REPEAT = ("20 iterations of 10 ants (the paper's) do not always find the shortest grid path: its mirror image "
            "(the two legs' cells swapped, e.g. (4, 1), (9, 0) for (5, 1), (9, 0)) is as long but for the turn "
            "model's first leg (metres), and 200 walks do not always meet both. The paper's identical repetitions "
@@ -52,7 +46,10 @@ _REPEAT = ("20 iterations of 10 ants (the paper's) do not always find the shorte
 REASONS = {
     "Scenario 2 (Table 4)": _S2_SHORTER,
     ("Scenario 2 (Table 4)", "alteration 1 [deg, + starboard] (planned)"):
-        _tie("(4, -1), (9, 0) for (5, -1), (9, 0)", "049, 075") + ". Either way, " + _S2_SHORTER,
+        "a tie: the mirror image of the shortest grid path (the two legs' cells swapped, (4, -1), (9, 0) for "
+        "(5, -1), (9, 0)) is as long but for the turn model's first leg (metres), and seed 1's colony found it and "
+        "not the shortest; the commonest route of the seeds below is the shortest, 049, 075. Either way, "
+        + _S2_SHORTER,
     ("Scenario 1 (Table 3)", "runs on one route of %d independent seeds" % REPEAT_SEEDS): _REPEAT,
     ("Scenario 2 (Table 4)", "runs on one route of %d independent seeds" % REPEAT_SEEDS): _REPEAT,
 }

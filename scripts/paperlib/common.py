@@ -162,6 +162,11 @@ def tally_text(rows):
     return text
 
 
+def knots_to_mps(kn):
+    """The one knots -> m/s conversion of the paper scripts (1 kn = 1852 m / 3600 s)."""
+    return kn * 1852.0 / 3600.0
+
+
 def side(change_deg):
     return "starboard" if change_deg > 0 else "port"
 

@@ -10,6 +10,7 @@ The paper's numbers (Sec. 4.2): steering -28.49 deg (head-on), -28.94 deg (cross
 (TS3), 43.35 m (TS4); the CRI of TS1 0.62 at the decision (330 s) and 0.43 at 426 s, of TS3 above 0.61 at
 447 s, of TS4 0.44 at 900 s.
 """
+import math
 import os
 import shutil
 import tempfile
@@ -17,7 +18,7 @@ import tempfile
 import yaml
 
 from . import common
-from .common import Job, band_row, exact_row
+from .common import Job, band_row, exact_row, knots_to_mps
 
 PAPER = "Wu et al. 2022"
 # (label, decision time [s], window after it for the first alteration [s], the paper's steering [deg,
@@ -70,7 +71,7 @@ def _head_on(kn, workdir):
     sc["own_ship"]["goal"] = {"x_m": 0, "y_m": 3000}
     ts1 = sc["targets"][0]
     ts1["speed_kn"] = kn
-    ts1["position"] = {"x_m": 0, "y_m": round(DECISION_RANGE + HEAD_ON_LEAD * (own_v + kn * 1852.0 / 3600.0), 2)}
+    ts1["position"] = {"x_m": 0, "y_m": round(DECISION_RANGE + HEAD_ON_LEAD * (own_v + knots_to_mps(kn)), 2)}
     sc["targets"] = [ts1]
     path = os.path.join(workdir, sc["name"])
     with open(path + ".yaml", "w") as f:
@@ -84,12 +85,11 @@ def _head_on(kn, workdir):
 # before 447 s, so the stated state is never reached. The bearings are not given, so they are our
 # reconstruction's (TS3 on a collision course, TS2 crossing ahead of her 15 s early), now about the ASV
 # on 352, at the reconstruction's 5 kn.
-CROSSING_LEAD = 0.0  # [s] from the start of the run to the stated state
 CROSSING_HEADING = 352.0
+CROSSING_AT = 447.0  # [s] the paper's time of the stated state
 
 
 def _velocity(course_deg, speed):
-    import math
     c = math.radians(course_deg)
     return (speed * math.sin(c), speed * math.cos(c))
 
@@ -101,8 +101,7 @@ def _meeting(v_own, v_t, t_meet, lead):
 
 
 def _crossing(workdir):
-    """wu_port's crossing alone, from the paper's stated state at the decision (CROSSING_LEAD s later)."""
-    import math
+    """wu_port's crossing alone, from the paper's stated state at the decision (the ASV at the origin)."""
     with open(os.path.join(common.SCENARIOS, "wu_port.yaml")) as f:
         sc = yaml.safe_load(f)
     v_own = _velocity(CROSSING_HEADING, sc["own_ship"]["speed_mps"])
@@ -110,22 +109,21 @@ def _crossing(workdir):
     for t in sc["targets"]:
         if t["name"] not in ("ts2", "ts3"):
             continue
-        v_t = _velocity(t["course_deg"], t["speed_kn"] * 1852.0 / 3600.0)
+        v_t = _velocity(t["course_deg"], knots_to_mps(t["speed_kn"]))
         rng, lead = (310.0, 0.0) if t["name"] == "ts3" else (150.0, 15.0)
         lo, hi = 0.0, 600.0  # the meeting time that puts the target rng metres away now
         for _ in range(60):
             mid = 0.5 * (lo + hi)
             (lo, hi) = (mid, hi) if math.hypot(*_meeting(v_own, v_t, mid, lead)) < rng else (lo, mid)
         p = _meeting(v_own, v_t, 0.5 * (lo + hi), lead)
-        t["position"] = {"x_m": round(p[0] - v_t[0] * CROSSING_LEAD, 2), "y_m": round(p[1] - v_t[1] * CROSSING_LEAD, 2)}
+        t["position"] = {"x_m": round(p[0], 2), "y_m": round(p[1], 2)}
         at[t["name"]] = t
-    start = (-v_own[0] * CROSSING_LEAD, -v_own[1] * CROSSING_LEAD)
     ahead = _velocity(CROSSING_HEADING, 3000.0)
     sc["name"] = "wu_crossing_stated"
     sc["duration_s"] = 400
-    sc["own_ship"]["position"] = {"x_m": round(start[0], 2), "y_m": round(start[1], 2)}
+    sc["own_ship"]["position"] = {"x_m": 0.0, "y_m": 0.0}
     sc["own_ship"]["course_deg"] = CROSSING_HEADING
-    sc["own_ship"]["goal"] = {"x_m": round(start[0] + ahead[0], 2), "y_m": round(start[1] + ahead[1], 2)}
+    sc["own_ship"]["goal"] = {"x_m": round(ahead[0], 2), "y_m": round(ahead[1], 2)}
     sc["targets"] = [at["ts2"], at["ts3"]]
     path = os.path.join(workdir, sc["name"])
     with open(path + ".yaml", "w") as f:
@@ -190,21 +188,21 @@ CROSSING = "crossing TS2 + TS3"
 
 
 def _crossing_rows(job):
-    """The crossing's rows from the run that starts at the paper's stated state (t = 0 is its 447 s)."""
+    """The crossing's rows from the run that starts at the paper's stated state (t = 0 is its CROSSING_AT)."""
     r, risk = job.runs[0], job.risk_rows
     dist = {t["name"]: t["min_distance_m"] for t in r["targets"]}
-    alt = first_alteration(r, CROSSING_LEAD, 90.0)
+    alt = first_alteration(r, 0.0, 90.0)
     paper = next(p for lab, _, _, p in ENCOUNTERS if lab == CROSSING)
     rows = [band_row(PAPER, CROSSING, "steering [deg, + starboard]", paper,
                      alt["course_change_deg"] if alt else None, ANGLE_BAND, "deg")]
     rows += [band_row(PAPER, CROSSING, "closest distance to %s [m]" % name.upper(), p, dist[name], DIST_BAND, "m")
              for lab, name, p in CLOSEST if lab == CROSSING]
     rows.append(exact_row(PAPER, CROSSING, f"CRI of TS3 above {THRESHOLD} at 447 s", True,
-                          (cri_at(risk, "ts3", CROSSING_LEAD, "cri") or 0.0) > THRESHOLD))
+                          (cri_at(risk, "ts3", 0.0, "cri") or 0.0) > THRESHOLD))
     line = "| %s, from the stated state at 447 s | paper | %s | %s | ts2 %.2f, ts3 %.2f @ 447 s |" % (
-        CROSSING, "%+.1f deg @ %.0f s" % (alt["course_change_deg"], alt["t_s"] + 447.0 - CROSSING_LEAD) if alt
+        CROSSING, "%+.1f deg @ %.0f s" % (alt["course_change_deg"], alt["t_s"] + CROSSING_AT) if alt
         else "none", ", ".join("%s %.1f m" % (n, dist[n]) for lab, n, _ in CLOSEST if lab == CROSSING),
-        cri_at(risk, "ts2", CROSSING_LEAD, "cri"), cri_at(risk, "ts3", CROSSING_LEAD, "cri"))
+        cri_at(risk, "ts2", 0.0, "cri"), cri_at(risk, "ts3", 0.0, "cri"))
     return rows, line
 
 
