@@ -56,16 +56,28 @@ TOPICS = [("/own/odom", Odometry), ("/ts1/odom", Odometry), ("/ais/targets", Tar
 
 
 def non_finite(msg, path=""):
-    """Paths of the float fields of msg (recursively) that are NaN or infinite."""
-    bad = []
+    """Paths of the float fields of msg (recursively) that are NaN or infinite.
+
+    The checker walks every message of a run (some 100,000 odometry messages with 72 covariance values
+    each): a float array is tested in one pass and the paths are only built for a value that fails,
+    which keeps the walk from taking a fifth of the run's CPU from the pipeline it watches."""
     if isinstance(msg, float):
         return [] if math.isfinite(msg) else [path]
     if isinstance(msg, (list, tuple)):
+        if not msg or (isinstance(msg[0], float) and all(map(math.isfinite, msg))):
+            return []
+        bad = []
         for i, m in enumerate(msg):
             bad += non_finite(m, "%s[%d]" % (path, i))
         return bad
-    for slot in getattr(msg, "__slots__", []):
-        bad += non_finite(getattr(msg, slot), path + "." + slot)
+    bad = []
+    for slot in getattr(msg, "__slots__", ()):
+        v = getattr(msg, slot)
+        if isinstance(v, float):
+            if not math.isfinite(v):
+                bad.append(path + "." + slot)
+        elif not isinstance(v, (int, str, bytes)):
+            bad += non_finite(v, path + "." + slot)
     return bad
 
 

@@ -3,14 +3,16 @@
 
 asv_scenario_gen writes situations 0..9 of the Monte-Carlo benchmark's test range (seed 7919: one of
 each of its first ten classes in asv_scenario_gen --list-classes order), each cut to 10 minutes after its last unaltered CPA so
-that the run ends once the encounters are over. Each runs with two planners through scenario.launch in
+that the run ends once the encounters are over. Each runs with one planner, the five in turn (situation i
+with PLANNERS[i mod 5], so every planner meets two classes), through scenario.launch in
 lockstep (sim_node -> NMEA -> ais_node/arpa_node -> tracker -> risk_node -> planner_node) and once
 through asv_batch (ground truth, in process). Pass rules, as the benchmark's (docs/evaluation.md): the
 own ship touches no ship and no land and keeps the scenario's minimum separation; and the ROS run and
 the batch run agree in class (collision, separation kept, arrived).
 
 Run by rostest (test/generated.test), which provides the master. Environment: ASV_GENERATED_ONLY
-(comma-separated situation indices), ASV_PLANNERS_ONLY (comma-separated planners).
+(comma-separated situation indices), ASV_PLANNERS_ONLY (comma-separated planners: each situation with
+every one of them instead of one in turn).
 """
 import json
 import math
@@ -29,7 +31,9 @@ from batch_result import batch_result  # noqa: E402
 
 SEED = 7919  # the benchmark's test range (scripts/benchmark.py RANGES)
 SITUATIONS = range(10)
-PLANNERS = ["mopso", "dssa_plus"]
+# In turn over the situations: every planner goes through ROS on two of them (asv_batch runs every planner
+# on every situation in the benchmark; here the question is whether ROS and batch agree).
+PLANNERS = ["mopso", "dssa_plus", "aco", "ga", "dssa"]
 KNOT = 1852.0 / 3600.0
 
 
@@ -113,12 +117,12 @@ def make_test(index, path, scenario, planner):
 
 def main():
     only = [int(s) for s in os.environ.get("ASV_GENERATED_ONLY", "").split(",") if s]
-    planners = [p for p in os.environ.get("ASV_PLANNERS_ONLY", "").split(",") if p] or PLANNERS
+    planners = [p for p in os.environ.get("ASV_PLANNERS_ONLY", "").split(",") if p]
     situations = generate(tempfile.mkdtemp(prefix="asv_generated_"))
     for index, (path, scenario) in situations.items():
         if only and index not in only:
             continue
-        for planner in planners:
+        for planner in planners or [PLANNERS[index % len(PLANNERS)]]:
             name = "test_%02d_%s_%s" % (index, scenario["name"].split("_s%d" % SEED)[0][len("gen_"):], planner)
             setattr(Generated, name, make_test(index, path, scenario, planner))
     rosunit.unitrun("asv_bringup", "generated_situations", Generated, sys.argv)

@@ -17,11 +17,23 @@ import rosunit
 from rosgraph_msgs.msg import Log
 
 START_LIMIT = 30.0  # [s, wall] a node that has not exited by then is running on a default: a failure
+EXECUTABLES = {}  # (pkg, node) -> path, found once: rosrun would search the workspace at every start
+
+
+def executable(pkg, node):
+    """The path of `pkg node` as rosrun finds it (devel or install space)."""
+    if (pkg, node) not in EXECUTABLES:
+        found = subprocess.run(["catkin_find", "--first-only", "--libexec", pkg, node], stdout=subprocess.PIPE,
+                               universal_newlines=True, check=True).stdout.strip()
+        if not found:
+            raise AssertionError("%s %s: no such executable" % (pkg, node))
+        EXECUTABLES[(pkg, node)] = found
+    return EXECUTABLES[(pkg, node)]
 
 
 def run_node(pkg, node, name, *args):
     """Runs `pkg node` as /name with private parameters args (_key:=value); returns (status, stderr)."""
-    cmd = ["rosrun", pkg, node, "__name:=" + name] + list(args)
+    cmd = [executable(pkg, node), "__name:=" + name] + list(args)
     try:
         done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=START_LIMIT,
                               universal_newlines=True)
