@@ -58,8 +58,8 @@ TOPICS = [("/own/odom", Odometry), ("/ts1/odom", Odometry), ("/ais/targets", Tar
 def non_finite(msg, path=""):
     """Paths of the float fields of msg (recursively) that are NaN or infinite.
 
-    The checker walks every message of a run (some 100,000 odometry messages with 72 covariance values
-    each): a float array is tested in one pass and the paths are only built for a value that fails,
+    The checker walks every message of a run (60,000 odometry messages in a 3000 s run, with 72 covariance
+    values each): a float array is tested in one pass and the paths are only built for a value that fails,
     which keeps the walk from taking a fifth of the run's CPU from the pipeline it watches."""
     if isinstance(msg, float):
         return [] if math.isfinite(msg) else [path]

@@ -24,9 +24,10 @@ def executable(pkg, node):
     """The path of `pkg node` as rosrun finds it (devel or install space)."""
     if (pkg, node) not in EXECUTABLES:
         found = subprocess.run(["catkin_find", "--first-only", "--libexec", pkg, node], stdout=subprocess.PIPE,
-                               universal_newlines=True, check=True).stdout.strip()
-        if not found:
-            raise AssertionError("%s %s: no such executable" % (pkg, node))
+                               stderr=subprocess.STDOUT, universal_newlines=True)
+        if found.returncode != 0 or not found.stdout.strip():
+            raise AssertionError("%s %s: no such executable (catkin_find: %s)" % (pkg, node, found.stdout.strip()))
+        found = found.stdout.strip()
         EXECUTABLES[(pkg, node)] = found
     return EXECUTABLES[(pkg, node)]
 
