@@ -64,7 +64,11 @@ flags() {
 # arpa runs 55 k/s, nmea 14 k/s, scenario 4.6 k/s). A run stopped by the time cap counts as a
 # failure: the remaining executions were never tried.
 declare -A smoke_runs=([fuzz_arpa]=1000000 [fuzz_nmea]=200000 [fuzz_scenario]=60000)
-max_secs=300
+# Both limits are wall seconds: FUZZ_MAX_SECS caps a run, FUZZ_INPUT_TIMEOUT one input (a hang).
+# make test raises them when the runs go at idle priority beside the rostests, where a run may wait
+# seconds for a core without hanging.
+max_secs=${FUZZ_MAX_SECS:-300}
+input_timeout=${FUZZ_INPUT_TIMEOUT:-5}
 # Short allocation stacks: see scripts/fuzz_long.sh (yaml-cpp's allocations would fill ASan's stack depot).
 export ASAN_OPTIONS=${ASAN_OPTIONS:-malloc_context_size=2}
 cxxflags="-std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I src/include -I /usr/include/eigen3"
@@ -116,7 +120,7 @@ smoke() {
   rm -rf "$out/$name.smoke" && mkdir -p "$out/$name.smoke"
   # shellcheck disable=SC2046
   if "$out/$name" "$out/$name.smoke" "$out/$name.corpus" $(flags "$name") -seed=1 -runs="$runs" \
-       -max_total_time="$max_secs" -rss_limit_mb=1024 -timeout=5 -print_final_stats=1 \
+       -max_total_time="$max_secs" -rss_limit_mb=1024 -timeout="$input_timeout" -print_final_stats=1 \
        -artifact_prefix="$out/$name-" > "$out/$name.log" 2>&1; then
     done_runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "$out/$name.log" | grep -o "[0-9]*$")
     if [ "${done_runs:-0}" -lt "$runs" ]; then
