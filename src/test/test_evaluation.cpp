@@ -297,6 +297,53 @@ TEST(Evaluation, Rule16IsJudgedAtTheFirstApparentAction) {
       << t.notes.front();
 }
 
+// Rule 16 "so far as possible": ts1 from starboard at (1500, 1500) heading west, collision at (0, 1500)
+// at t = 300 s, so the rules apply from t = 0 at 2121 m and TCPA 300 s, already inside 2 nm and 8 min.
+// A 60 deg turn at t = 30 s is within reaction_s (60 s) of the entry: early. At t = 90 s it is late:
+// at t = 89 s own (0, 445), ts1 (1055, 1500): range 1055 sqrt 2 = 1492 m, TCPA 1055 / 5 = 211 s.
+// With reaction_s = 0 the turn at t = 30 s is judged on t = 29 s: own (0, 145), ts1 (1355, 1500):
+// 1916 m and 271 s.
+TEST(Evaluation, Rule16CountsAnActionWithinTheReactionTimeOfACloseEntryAsEarly) {
+  Script s;
+  s.tgt0 = {1500.0, 1500.0};
+  s.duration = 600.0;
+  s.own_course_deg = {{0.0, 0.0}, {30.0, 60.0}};
+  const TargetResult prompt = record(s).finish().own.targets.at(0);
+  EXPECT_EQ(prompt.encounter, Encounter::CrossingGiveWay);
+  EXPECT_FALSE(hasNote(prompt, "rule 16")) << prompt.notes.front();
+  EvaluationConfig none;
+  none.reaction_s = 0.0;
+  const TargetResult strict = record(s, none).finish().own.targets.at(0);
+  EXPECT_TRUE(hasNote(strict, "rule 16: first apparent action at t=30 s, 1916 m and 271 s from CPA: late"));
+  s.own_course_deg = {{0.0, 0.0}, {90.0, 60.0}};
+  const TargetResult slow = record(s).finish().own.targets.at(0);
+  EXPECT_TRUE(hasNote(slow, "rule 16: first apparent action at t=90 s, 1492 m and 211 s from CPA: late"));
+}
+
+// Rule 8 judges the whole turn the own ship made while the risk lasted. The crossing of the clean case;
+// the own ship turns to starboard at 1 deg/s from t = 10 s to 40 deg (t = 50 s) and ts1 turns north at
+// t = 20 s, which removes the risk: on the entry course the own ship would then keep 4.9 km from her
+// (no relative motion), so the risk lasted to t = 19 s, when the own ship had turned 9 deg. Judged as
+// 9 deg, Rule 8 would cost 0.3 x (1 - 9/30) = 0.21; the turn under way runs on to 40 deg: no finding.
+TEST(Evaluation, Rule8MeasuresATurnUnderWayWhenTheTargetRemovedTheRiskToItsEnd) {
+  Script s;
+  s.duration = 600.0;
+  for (int i = 0; i <= 40; ++i)
+    s.own_course_deg[10.0 + i] = i;
+  s.tgt_turns = {{20.0, 0.0}};
+  const TargetResult t = record(s).finish().own.targets.at(0);
+  EXPECT_EQ(t.encounter, Encounter::CrossingGiveWay);
+  EXPECT_FALSE(hasNote(t, "rule 8")) << t.notes.front();
+  EXPECT_DOUBLE_EQ(t.score, 1.0);
+  // Stopped at 9 deg, the turn is judged as made: 9 deg.
+  Script half = s;
+  half.own_course_deg.clear();
+  for (int i = 0; i <= 9; ++i)
+    half.own_course_deg[10.0 + i] = i;
+  const TargetResult h = record(half).finish().own.targets.at(0);
+  EXPECT_TRUE(hasNote(h, "rule 8: starboard turn 9 deg (speed -0 %) < 30 deg apparent"));
+}
+
 // Rule 8(b): three 8 deg steps to starboard (t = 100, 200, 300 s: three manoeuvres, 30 s window) are a
 // succession of small alterations; two are not.
 TEST(Evaluation, ASuccessionOfSmallAlterationsIsARule8bFinding) {
@@ -707,6 +754,11 @@ TEST(Evaluation, ConfigValidatesAndReadsParams) {
   ParamMap extremis;
   extremis.set("extremis_delay_s", -1.0);
   EXPECT_THROW(EvaluationConfig::fromParams(extremis), std::invalid_argument);
+  ParamMap reaction;
+  reaction.set("reaction_s", -1.0);
+  EXPECT_THROW(EvaluationConfig::fromParams(reaction), std::invalid_argument);
+  reaction.set("reaction_s", 30.0);
+  EXPECT_DOUBLE_EQ(EvaluationConfig::fromParams(reaction).reaction_s, 30.0);
   ParamMap typo;
   typo.set("apparent_course", 20.0);
   EXPECT_THROW(EvaluationConfig::fromParams(typo), std::invalid_argument);

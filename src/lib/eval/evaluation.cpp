@@ -54,6 +54,7 @@ void EvaluationConfig::validate() const {
   require(apparent_speed_fraction > 0.0 && apparent_speed_fraction <= 1.0,
           "apparent_speed_fraction must be in (0, 1]");
   require(pos(early_range_m) && pos(early_tcpa_s), "early_range_m and early_tcpa_s must be > 0");
+  require(std::isfinite(reaction_s) && reaction_s >= 0.0, "reaction_s must be >= 0");
   require(pos(cross_ahead_range_m), "cross_ahead_range_m must be > 0");
   require(frac(penalty_rule8) && frac(penalty_late) && frac(penalty_port) && frac(penalty_ahead) &&
               frac(penalty_stand_on) && frac(penalty_succession) && frac(penalty_extremis),
@@ -81,6 +82,7 @@ EvaluationConfig EvaluationConfig::fromParams(const ParamMap& p) {
   c.apparent_speed_fraction = p.getDouble("apparent_speed_fraction", c.apparent_speed_fraction);
   c.early_range_m = p.getDouble("early_range_m", c.early_range_m);
   c.early_tcpa_s = p.getDouble("early_tcpa_s", c.early_tcpa_s);
+  c.reaction_s = p.getDouble("reaction_s", c.reaction_s);
   c.cross_ahead_range_m = p.getDouble("cross_ahead_range_m", c.cross_ahead_range_m);
   c.hu.t_max_s = p.getDouble("hu/t_max_s", c.hu.t_max_s);
   c.hu.d_min_m = p.getDouble("hu/d_min_m", c.hu.d_min_m);
@@ -416,9 +418,36 @@ RunRecorder::Passage RunRecorder::passage(const Instants& both, const std::vecto
     if (p.kp == both.size() && (std::fabs(dev) >= apparent_course || drop >= cfg_.apparent_speed_fraction))
       p.kp = k;
   }
+  finishTurn(p);
   p.alter_deg = radToDeg(std::max(p.max_stbd, p.max_port));
   p.side = p.max_stbd >= p.max_port ? "starboard" : "port";
   return p;
+}
+
+// Rule 8 judges the size of the action taken: a turn still under way when the target's own motion
+// removed the risk (kr) is measured to its end, the sample after which the course stops moving the
+// same way; the samples after kr count for nothing else (timing, side, port turns). Without this, a
+// 36 deg turn ordered at once and half made when the target's own turn removed the risk would be
+// judged an 8 deg one.
+void RunRecorder::finishTurn(Passage& p) const {
+  const size_t kr = p.kr;
+  if (kr >= p.kc || kr <= p.ke)
+    return;
+  const double c_ref = p.both[p.ke].first->s.course;
+  auto dev = [&](size_t k) { return wrapPi(p.both[k].first->s.course - c_ref); };
+  const double sense = dev(kr) - dev(kr - 1);
+  if (std::fabs(sense) < 1e-6)
+    return;  // not turning at kr
+  for (size_t k = kr + 1; k <= p.kc && (dev(k) - dev(k - 1)) * sense > 0.0; ++k) {
+    p.max_stbd = std::max(p.max_stbd, dev(k));
+    p.max_port = std::max(p.max_port, -dev(k));
+  }
+}
+
+double RunRecorder::earliness(const Passage& p, size_t k, double t_act) const {
+  if (t_act - p.both[p.ke].first->t <= cfg_.reaction_s)
+    return 1.0;  // as early as possible: within reaction_s of the entry into the rules
+  return std::max(p.cpas[k].range / cfg_.early_range_m, p.cpas[k].tcpa / cfg_.early_tcpa_s);
 }
 
 // Rules 14, 15 and 17(c) govern while there is a risk of collision with the target. When the target's
@@ -497,7 +526,7 @@ void RunRecorder::judgeCrossAhead(const Passage& p, TargetResult& r, double& fac
 // Rules 8 and 16 judge only whether she had been late while it lasted (the range and TCPA at kr).
 void RunRecorder::judgeRemovedRisk(const Passage& p, TargetResult& r, double& factor) const {
   const Cpa& c = p.cpas[p.kr];
-  const double early = std::max(c.range / cfg_.early_range_m, c.tcpa / cfg_.early_tcpa_s);
+  const double early = earliness(p, p.kr, p.both[p.kr].first->t);
   if (early < 1.0)
     penalise(r, factor, cfg_.penalty_late * (1.0 - early),
              strFormat("rule 16: no action while the risk lasted (to t=%.0f s, %.0f m and %.0f s from CPA): "
@@ -522,7 +551,7 @@ void RunRecorder::judgeEarly(const Passage& p, TargetResult& r, double& factor) 
   const size_t ka = p.kp < both.size() ? p.kp : p.ka;
   const size_t kb = ka > p.ke ? ka - 1 : p.ke;
   const double range = p.cpas[kb].range, tcpa = p.cpas[kb].tcpa;
-  const double early = std::max(range / cfg_.early_range_m, tcpa / cfg_.early_tcpa_s);
+  const double early = earliness(p, kb, both[ka].first->t);
   if (early < 1.0)
     penalise(
         r, factor, cfg_.penalty_late * (1.0 - early),

@@ -58,6 +58,11 @@ struct EvaluationConfig {
   // it, the range was at least early_range_m or the TCPA at least early_tcpa_s.
   double early_range_m = 3704.0;  // [m] 2 nm
   double early_tcpa_s = 480.0;    // [s] 8 min
+  // Rule 16 asks for early action "so far as possible": a ship that enters the rules already inside
+  // the early range and TCPA (a close start, or a risk the target created late) is early when her first
+  // apparent action (or the end of the risk, when the target removed it first) comes within
+  // reaction_s of the entry. Our choice: about the time to see, decide and put the helm over.
+  double reaction_s = 60.0;  // [s]
   // Rule 15: crossing the stand-on ship's track ahead of it, closer than this, is "crossing ahead".
   double cross_ahead_range_m = 3704.0;  // [m] 2 nm
   // Rule 17: the give-way ship's action is "clearly lacking" once the target is urgent (Hu et al. 2017
@@ -296,6 +301,9 @@ private:
   // The last sample of the passage (ke to kc) before the target's own motion removed the risk.
   size_t riskRemoved(const Instants& both, size_t ke, size_t kc) const;
   bool inRisk(const Passage& p, size_t k) const;
+  void finishTurn(Passage& p) const;
+  // Rule 16: how early sample k is, 1 or more for early (an action at time t_act after the entry).
+  double earliness(const Passage& p, size_t k, double t_act) const;
   void judgeGiveWay(const Passage& p, TargetResult& r, double& factor,
                     const std::vector<GiveWayDuty>& duties) const;
   void judgeRemovedRisk(const Passage& p, TargetResult& r, double& factor) const;
