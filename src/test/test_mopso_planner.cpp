@@ -147,7 +147,7 @@ TEST(MopsoObjectives, SmoothnessEq9AndLengthEq10ByHand) {
 }
 
 TEST(MopsoConstraints, Eq3To6And11) {
-  const MopsoConfig cfg;  // 15 deg, 60 deg, t in [60, 1800] s
+  const MopsoConfig cfg = MopsoConfig::paper();  // the paper's 15 deg, 60 deg; t in [60, 1800] s
   EXPECT_DOUBLE_EQ(apparentAlterationViolation(degToRad(20.0), cfg), 0.0);
   EXPECT_NEAR(apparentAlterationViolation(degToRad(10.0), cfg), degToRad(5.0), 1e-12);
   EXPECT_NEAR(apparentAlterationViolation(degToRad(-10.0), cfg), degToRad(5.0), 1e-12);  // |delta|
@@ -318,7 +318,7 @@ TEST(MopsoPlanner, OpenWaterOvertakingGoesStarboard) {
   ASSERT_EQ(plan.status, PlanStatus::Ok) << plan.message;
   EXPECT_EQ(planner.lastResult().pass, 1);
   const double alt = planAlterationDeg(plan, p);
-  EXPECT_GE(alt, 15.0 - 1e-9);  // (3) and (6)
+  EXPECT_GE(alt, 30.0 - 1e-9);  // (3) and (6), sea mode: readily apparent to the referee
   EXPECT_LE(alt, 60.0 + 1e-9);  // (4), risk 1
   ASSERT_EQ(plan.waypoints.size(), 3u);
   EXPECT_LT(plan.waypoints[1].position.y(), 0.0);  // B south of the track: starboard of an east-bound ship
@@ -333,6 +333,20 @@ TEST(MopsoPlanner, OpenWaterOvertakingGoesStarboard) {
   EXPECT_NEAR(plan.cost, chosen.h(), 1e-9);
   for (const auto& s : front)
     EXPECT_GE(radToDeg(s.alteration), 15.0 - 1e-9);  // pass 1 keeps (6) on the whole front
+}
+
+// Eq. (3)'s least alteration: the paper's 15 deg in paper mode, 30 deg (the referee's readily apparent
+// alteration, EvaluationConfig::apparent_course_deg) in sea mode.
+TEST(MopsoPlanner, LeastAlterationIsThePapersInPaperModeAndApparentInSeaMode) {
+  const ParamMap paper(std::map<std::string, std::string>{{"mode", "paper"}});
+  EXPECT_DOUBLE_EQ(MopsoConfig::fromParams(paper).min_alteration_deg, 15.0);
+  EXPECT_DOUBLE_EQ(MopsoConfig::fromParams(ParamMap{}).min_alteration_deg, 30.0);
+  const PlanningProblem p = huOvertakingOpenWater();
+  MopsoPlanner planner;
+  planner.configure(paper);
+  const Plan plan = planner.plan(p);
+  ASSERT_EQ(plan.status, PlanStatus::Ok) << plan.message;
+  EXPECT_GE(planAlterationDeg(plan, p), 15.0 - 1e-9);
 }
 
 TEST(MopsoPlanner, RestrictedWaterOvertakingGoesPort) {

@@ -68,6 +68,7 @@ MopsoConfig MopsoConfig::paper() {
   MopsoConfig c;
   c.inflate = false;
   c.rule17c_pass = false;
+  c.min_alteration_deg = 15.0;
   return c;
 }
 
