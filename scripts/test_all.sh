@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # make test and make check: every phase timed, the slowest tests named, the summary line last.
 # Usage: scripts/test_all.sh [--check]     (run by make, which exports ASV_CATKIN, JOBS and ASAN)
-#   make test:  setup, build, test build, unit tests, rostests, ASan+UBSan unit tests, fuzz smoke runs,
-#               checks (clang-format, the layering allow-list, clang-tidy, catkin_lint, README, plots,
+#   make test:  setup, build, test build, unit tests, rostests (with the ASan+UBSan unit tests and the fuzz
+#               smoke runs beside them at idle priority), checks (clang-format, the layering allow-list, clang-tidy, catkin_lint, README, plots,
 #               papers, install space)
 #   make check: build, test build and the unit tests alone (the inner loop: no master, no ASan)
 # Independent test executables run JOBS at a time under ctest (each writes its own JUnit XML and a
@@ -62,17 +62,27 @@ checks() {
 asan() {
   echo "asv_core unit tests under ASan+UBSan (build_asan/, log $logs/asan.log)"
   JOBS=$JOBS scripts/asan_tests.sh > "$logs/asan.log" 2>&1
+  local rc=$?
   grep -E "FAILED|MISSING|executables" "$logs/asan.log"
+  [ "$rc" -gt 128 ] && junit_failure asan "asan_tests.sh killed by signal $((rc - 128)), see $logs/asan.log"
   return 0
+}
+
+# junit_failure NAME MESSAGE: one failed case in $results/NAME-died.xml (a run that left no results).
+junit_failure() {
+  printf '<?xml version="1.0"?>\n<testsuite name="%s" tests="1" failures="1"><testcase classname="%s" name="%s"><failure message="%s"/></testcase></testsuite>\n' \
+    "$1" "$1" "$1" "$2" > "$results/$1-died.xml"
 }
 
 # beside: the ASan+UBSan unit tests and the fuzz smoke runs, started with the rostests and run under
 # SCHED_IDLE (nice 19 where chrt is refused). A lockstep pipeline leaves about a quarter of the cores
 # idle while its nodes wait on each other's messages, and a test timed in wall seconds runs beside
 # single-node tests only, so one core idles for minutes: the sanitized tests take that time, and lose
-# the core at once whenever a ROS node wakes (an idle-class task never delays a normal one). Neither
-# measures wall time (the fuzz runs a fixed number of executions), so a starved run is only slower.
-# Their output goes to $logs/beside.out, their phase times to $logs/beside.times.
+# the core at once whenever a ROS node wakes (an idle-class task never delays a normal one). A starved
+# run is only slower: the fuzz runs a fixed number of executions, and the planner tests plan to
+# completion (a budget no run reaches), so no wall-clock deadline changes a result. Their output goes
+# to $logs/beside.out, their phase times to $logs/beside.times. It runs in a process group of its own,
+# killed when make test stops early; when it dies, a failure is recorded.
 beside() {
   chrt -i -p 0 "$BASHPID" > /dev/null 2>&1 || renice -n 19 -p "$BASHPID" > /dev/null
   local t0
@@ -100,10 +110,15 @@ rm -rf "$results"
 mkdir -p "$results"
 phase "unit tests" ctest_group unit "_gtest_"
 if [ "$mode" = test ]; then
-  beside > "$logs/beside.out" 2>&1 &
+  set -m  # its own process group, signals not ignored: the traps can stop all of it
+  beside < /dev/null > "$logs/beside.out" 2>&1 &
   beside_pid=$!
+  set +m
+  trap 'kill -- -"$beside_pid" 2> /dev/null' EXIT
+  trap 'kill -- -"$beside_pid" 2> /dev/null; exit 130' INT TERM
   phase rostests ctest_group rostest "_rostest_"
-  phase "beside rest" wait "$beside_pid"
+  phase "beside rest" wait "$beside_pid" || junit_failure beside "the ASan/fuzz job beside the rostests failed or died, see $logs/beside.out"
+  trap - EXIT INT TERM
   echo "== ASan+UBSan and fuzz smoke (beside the rostests, idle priority; log $logs/beside.out)"
   grep -vE "^fuzz: .* clean for" "$logs/beside.out"
   phase checks checks

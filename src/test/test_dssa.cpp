@@ -418,6 +418,7 @@ TEST(DssaPlanner, AvoidsAConstantVelocityTargetDeterministically) {
   pb.limits.max_speed = 10;
   pb.limits.min_speed = 0;
   pb.goal = {0, 10000};
+  pb.time_budget = 60.0;  // planned to completion, however slow the machine
   PlannerTarget t;
   t.state = shipAt(0, 300, 180, 10);
   pb.targets.push_back(t);

@@ -322,7 +322,7 @@ TEST(Evaluation, Rule16CountsAnActionWithinTheReactionTimeOfACloseEntryAsEarly) 
 
 // Rule 8 judges the whole turn the own ship made while the risk lasted. The crossing of the clean case;
 // the own ship turns to starboard at 1 deg/s from t = 10 s to 40 deg (t = 50 s) and ts1 turns north at
-// t = 20 s, which removes the risk: on the entry course the own ship would then keep 4.9 km from her
+// t = 20 s, which removes the risk: on the entry course the own ship would then keep 6.9 km from her
 // (no relative motion), so the risk lasted to t = 19 s, when the own ship had turned 9 deg. Judged as
 // 9 deg, Rule 8 would cost 0.3 x (1 - 9/30) = 0.21; the turn under way runs on to 40 deg: no finding.
 TEST(Evaluation, Rule8MeasuresATurnUnderWayWhenTheTargetRemovedTheRiskToItsEnd) {

@@ -424,11 +424,11 @@ RunRecorder::Passage RunRecorder::passage(const Instants& both, const std::vecto
   return p;
 }
 
-// Rule 8 judges the size of the action taken: a turn still under way when the target's own motion
-// removed the risk (kr) is measured to its end, the sample after which the course stops moving the
-// same way; the samples after kr count for nothing else (timing, side, port turns). Without this, a
-// 36 deg turn ordered at once and half made when the target's own turn removed the risk would be
-// judged an 8 deg one.
+// Rule 8 judges the size of the action taken: a turn away from the entry course still under way when
+// the target's own motion removed the risk (kr) is measured to its end, the sample after which the
+// course stops moving the same way; the samples after kr count for nothing else (timing, port turns).
+// Without this, a 36 deg turn ordered at once and partly made (8 deg) when the target's own turn
+// removed the risk would be judged an 8 deg one.
 void RunRecorder::finishTurn(Passage& p) const {
   const size_t kr = p.kr;
   if (kr >= p.kc || kr <= p.ke)
@@ -436,12 +436,12 @@ void RunRecorder::finishTurn(Passage& p) const {
   const double c_ref = p.both[p.ke].first->s.course;
   auto dev = [&](size_t k) { return wrapPi(p.both[k].first->s.course - c_ref); };
   const double sense = dev(kr) - dev(kr - 1);
-  if (std::fabs(sense) < 1e-6)
-    return;  // not turning at kr
-  for (size_t k = kr + 1; k <= p.kc && (dev(k) - dev(k - 1)) * sense > 0.0; ++k) {
-    p.max_stbd = std::max(p.max_stbd, dev(k));
-    p.max_port = std::max(p.max_port, -dev(k));
-  }
+  if (std::fabs(sense) < 1e-6 || sense * dev(kr) <= 0.0)
+    return;  // not turning away from the entry course at kr
+  const double side = sense > 0.0 ? 1.0 : -1.0;
+  double& largest = sense > 0.0 ? p.max_stbd : p.max_port;
+  for (size_t k = kr + 1; k <= p.kc && (dev(k) - dev(k - 1)) * sense > 0.0; ++k)
+    largest = std::max(largest, side * dev(k));
 }
 
 double RunRecorder::earliness(const Passage& p, size_t k, double t_act) const {

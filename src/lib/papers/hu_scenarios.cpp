@@ -21,6 +21,9 @@ PlanningProblem baseProblem(double goal_east_nm) {
   p.limits.max_speed = kHuOwnSpeed;
   p.goal = {nmToMetres(goal_east_nm), 0.0};
   p.seed = 1;
+  // Planned to completion: no wall-clock deadline may change a published or tested plan (a test may
+  // run starved of CPU, e.g. beside make test's rostests).
+  p.time_budget = 60.0;
   return p;
 }
 

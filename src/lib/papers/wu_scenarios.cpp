@@ -60,6 +60,9 @@ PlanningProblem base() {
   p.goal = {0.0, 3000.0};
   p.limits.max_speed = kWuAsvSpeed;
   p.seed = 1;
+  // Planned to completion: no wall-clock deadline may change a published or tested plan (a test may
+  // run starved of CPU, e.g. beside make test's rostests).
+  p.time_budget = 60.0;
   return p;
 }
 

@@ -56,8 +56,7 @@ struct MopsoConfig {
                                   // later than t_max is no risk by eq. (1), so the default is t_max (20 min)
   // [deg] eq. (3) and (6): the least alteration, readily apparent (Rule 8(b)). The paper's 15 in paper
   // mode; sea mode 30, the alteration the referee (evaluation.h apparent_course_deg) and the ACO
-  // planner's sea mode take as readily apparent (our choice: at 15 the evaluator found a fifth of
-  // MOPSO's give-way passes not apparent).
+  // planner's sea mode take as readily apparent.
   double min_alteration_deg = 30.0;
   double max_alteration_deg = 60.0;     // [deg] eq. (4): efficiency bound, waived at risk 2; paper 60
   double search_alteration_deg = 90.0;  // [deg] the swarm searches delta in [-this, +this]; our choice:
