@@ -114,6 +114,44 @@ TEST(PlanFollower, StandingOnDoesNotReplanForTheShipStoodOnFor) {
   EXPECT_NEAR(passesWithin(why), 0.0, 50.0) << why;
 }
 
+// Rule 17(a)(i) lasts until the ship is past. ts1 (from port, compliant) at risk 1 when a plan is made;
+// at the next plan she still stands on for it (PlanningProblem::standing_on), at risk 1 still or after
+// its own action removed the risk (level 0) with its CPA still ahead, until the CPA is past, the ship
+// turns non-compliant, a risk gives her another role, or with the stand-on policy off. A stand-on
+// situation no earlier plan saw (a fresh follower: a risk her own turn may have made) does not count;
+// the planner's plan is judged as before (closesStandOn).
+TEST(PlanFollower, SheStandsOnUntilTheShipIsPastThoughItsActionRemovedTheRisk) {
+  asv::PlannerTarget seen = standOnTarget(true, asv::RiskLevel::Collision);
+  seen.tcpa = 833.3;
+  asv::PlannerTarget removed = seen;
+  removed.risk = asv::RiskLevel::None;
+  removed.tcpa = 600.0;
+  auto standingOn = [&](asv::PlanFollower f, const asv::PlannerTarget& now) {
+    f.acceptPlan(straightNorth(), 0.0, {seen}, "test");
+    return f.buildProblem(10.0, {now}).standing_on.size();
+  };
+  EXPECT_EQ(standingOn(follower(), removed), 1u);
+  EXPECT_TRUE(follower().buildProblem(10.0, {removed}).standing_on.empty());
+  asv::PlannerTarget past = removed;
+  past.tcpa = -5.0;
+  EXPECT_EQ(standingOn(follower(), past), 0u);
+  asv::PlannerTarget lacking = removed;
+  lacking.compliant = false;
+  EXPECT_EQ(standingOn(follower(), lacking), 0u);
+  EXPECT_EQ(standingOn(follower(false), removed), 0u);
+  EXPECT_EQ(standingOn(follower(), seen), 1u);
+  EXPECT_TRUE(follower().buildProblem(10.0, {seen}).standing_on.empty());
+  asv::PlannerTarget other_role = seen;
+  other_role.encounter = asv::Encounter::CrossingGiveWay;
+  other_role.role = asv::OwnRole::GiveWay;
+  EXPECT_EQ(standingOn(follower(), other_role), 0u);
+  // A plan made meanwhile (the ship past) ends it: a later risk-free picture does not bring it back.
+  asv::PlanFollower f = follower();
+  f.acceptPlan(straightNorth(), 0.0, {seen}, "test");
+  f.acceptPlan(straightNorth(), 20.0, {past}, "test");
+  EXPECT_TRUE(f.buildProblem(30.0, {removed}).standing_on.empty());
+}
+
 namespace {
 
 // A slow ship the own ship overtakes: 1000 m east of her track, `ahead` metres ahead, north at 2 m/s;
@@ -1011,6 +1049,46 @@ TEST(PlanUnderSharedRules, TheStandOnRuleYieldsToADutyToKeepOutOfTheWay) {
   pr.targets = {westboundGiveWay({8000.0, 8000.0}, 1.0)};
   const asv::Plan duty = asv::planUnderSharedRules(turn, pr);
   EXPECT_NEAR(duty.course_setpoint, asv::degToRad(30.0), 1e-9) << duty.message;
+}
+
+// While she stands on for a ship in a risk (standing_on) the shared rules keep her course and speed
+// instead of a plan that turns her (a route bend 40 deg to starboard, say), without asking the planner;
+// with a duty to keep out of the way of another ship (ts2 crossing from starboard), or with land within
+// 1 nm (a rock 1500 m to port, clear of the plan), the planner's plan.
+TEST(PlanUnderSharedRules, SheKeepsHerCourseThroughARouteBendWhileSheStandsOn) {
+  asv::PlanningProblem pr;
+  pr.own = own();
+  pr.goal = {12855.8, 15320.9};  // 040 deg, 20 km
+  pr.min_separation = 926.0;
+  asv::PlannerTarget ts1 = standOnTarget(true, asv::RiskLevel::None);
+  ts1.tcpa = 600.0;
+  pr.stand_on_for = pr.standing_on = {ts1};
+  int asked = 0;
+  auto bend = [&](const asv::PlanningProblem& p) {
+    ++asked;
+    asv::Plan plan;
+    plan.status = asv::PlanStatus::Ok;
+    plan.course_setpoint = asv::degToRad(40.0);
+    plan.speed_setpoint = 6.0;
+    plan.waypoints = {{p.own.position, 0.0, 0.0, 0.0}, {p.goal, 3333.0, asv::degToRad(40.0), 6.0}};
+    return plan;
+  };
+  const asv::Plan held = asv::planUnderSharedRules(bend, pr);
+  EXPECT_NEAR(held.course_setpoint, 0.0, 1e-12) << held.message;
+  EXPECT_EQ(held.message, "stand on (Rule 17(a)(i)) for ts1 until past");
+  EXPECT_EQ(asked, 0);
+  asv::PlannerTarget ts2 = westboundGiveWay({8000.0, 8000.0}, 1.0);
+  ts2.state.id = "ts2";
+  pr.targets = {ts2};
+  const asv::Plan duty = asv::planUnderSharedRules(bend, pr);
+  EXPECT_NEAR(duty.course_setpoint, asv::degToRad(40.0), 1e-9) << duty.message;
+  EXPECT_GE(asked, 1);
+  pr.targets.clear();
+  pr.obstacles = {{"rock", {{-1600.0, -100.0}, {-1500.0, -100.0}, {-1500.0, 100.0}, {-1600.0, 100.0}}}};
+  asked = 0;
+  const asv::Plan coastal = asv::planUnderSharedRules(bend, pr);
+  EXPECT_NEAR(coastal.course_setpoint, asv::degToRad(40.0), 1e-9) << coastal.message;
+  EXPECT_EQ(asked, 1);
 }
 
 // The net taken instead of a port plan keeps its margin from a ship she stands on for while she gives

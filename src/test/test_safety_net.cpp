@@ -178,6 +178,41 @@ TEST(SafetyNet, TheStandOnShipHoldsCourseWhenThePlanWouldCloseHerGiveWayShip) {
   EXPECT_DOUBLE_EQ(p.waypoints[1].speed, 6.0);
 }
 
+// The stand-on hold lasts until the way back is clear. Own ship north at 6 m/s, her goal at (3000, 0);
+// a give-way ship from port, eastbound at 6 m/s from (-4000, 2000). Holding course, by hand: relative
+// position (-4000, 2000), velocity (6, -6), TCPA 36000 / 72 = 500 s, DCPA |(-1000, -1000)| = 1414 m,
+// wider than 1.1 x 926 m: past at 500 + 60 = 560 s. Steering for the goal from (0, 3360) then (velocity
+// 6 x (3000, -3360) / 4504.4 = (4.00, -4.48)), with the ship at (-640, 2000): relative (-640, -1360),
+// (2.00, 4.48), TCPA 306 s, DCPA 30 m, a collision course of her own making. The hold is lengthened
+// until the way back passes her at min(1.1 x 1852, 1414) - 1 = 1413 m, checked here with the CPA in
+// closed form (the shared layer samples the plan); half a minute less would not.
+TEST(SafetyNet, TheStandOnHoldLastsUntilTheWayBackIsClear) {
+  PlanningProblem pr;
+  pr.own.id = "own";
+  pr.own.speed = 6.0;
+  pr.goal = {3000.0, 0.0};
+  pr.min_separation = 926.0;
+  PlannerTarget gw = target("gw", {-4000.0, 2000.0}, 90.0, 6.0);
+  gw.encounter = Encounter::CrossingStandOn;
+  gw.role = OwnRole::StandOn;
+  const Cpa held = computeCpa(pr.own.position, pr.own.velocity(), gw.state.position, gw.state.velocity());
+  EXPECT_NEAR(held.tcpa, 500.0, 1e-9);
+  EXPECT_NEAR(held.dcpa, 1414.2, 0.1);
+  auto wayBack = [&](double hold) {  // the CPA of the straight way from the hold's end to the goal
+    const Eigen::Vector2d at = pr.own.position + pr.own.velocity() * hold;
+    const Eigen::Vector2d v = courseSpeedToVelocity(courseOf(pr.goal - at), 6.0);
+    return computeCpa(at, v, gw.state.position + gw.state.velocity() * hold, gw.state.velocity()).dcpa;
+  };
+  EXPECT_NEAR(wayBack(560.0), 30.0, 5.0);
+  const Plan p = holdCoursePlan(pr, {gw});
+  ASSERT_EQ(p.waypoints.size(), 2u);
+  EXPECT_NEAR(p.course_setpoint, 0.0, 1e-12);
+  const double hold = p.waypoints[1].time;
+  EXPECT_GT(hold, 560.0);
+  EXPECT_GE(wayBack(hold), 1413.0 - 5.0) << "hold " << hold << " s";
+  EXPECT_LT(wayBack(hold - 30.0), 1413.0) << "hold " << hold << " s";
+}
+
 // How planUnderSharedRules seeks the preferred distance: the net's turns to starboard at full speed only.
 // A ship crossing from starboard at 4 m/s, westbound 1 km ahead: where no turn to starboard at full speed
 // keeps the margin, the net by its order of preference slows down on the way (target 2.5 km east) or

@@ -295,6 +295,24 @@ std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem
   return plan;
 }
 
+// Rule 17(a)(i): while she stands on for a ship in a risk of collision (PlanningProblem::standing_on)
+// and keeps out of the way of none, she keeps her course and speed until it is past, through a bend of
+// her route too (the give-way ship acts on the course she holds): the hold (holdCoursePlan), when it
+// keeps every other rule (land, the minimum separation from the other ships). No planner is asked.
+// In open water only (kOpenWater): in a harbour or a channel her route's bends follow the water (Rule
+// 9), and a hold that passes the other ships of a crowded port at its small minimum would keep the
+// planner from them.
+std::optional<Plan> standOn(const PlanningProblem& problem, const RuleCheck& check) {
+  if (problem.standing_on.empty() || check.keeps_clear ||
+      trackObstacleDistance({problem.own.position}, problem.obstacles) < kOpenWater)
+    return std::nullopt;
+  Plan hold = holdCoursePlan(problem, problem.standing_on);
+  if (!check.broken(hold).empty())
+    return std::nullopt;
+  hold.message = "stand on (Rule 17(a)(i)) for " + problem.standing_on.front().state.id + " until past";
+  return hold;
+}
+
 }  // namespace
 
 void applyPlannerMode(PlanFollowerConfig& cfg, PlannerMode mode, bool plans_once, bool own_trigger) {
@@ -331,6 +349,8 @@ Plan planUnderSharedRules(const std::function<Plan(const PlanningProblem&)>& mak
     check.port_side |= t.encounter == Encounter::CrossingStandOn;
     check.keeps_clear |= keepsOutOfTheWay(t);
   }
+  if (std::optional<Plan> hold = standOn(problem, check))
+    return *hold;
   const bool separation_net = problem.min_separation > 0.0 && !problem.targets.empty();
   double preferred_time = 0.0;
   if (separation_net)
@@ -539,6 +559,11 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
   for (const auto& t : targets) {
     if (t.state.id == own_->id || !t.state.finite())
       continue;
+    if (standingOn(t)) {
+      pr.stand_on_for.push_back(t);
+      pr.standing_on.push_back(t);
+      continue;
+    }
     if (standsOnFor(t) || dutyWaits(t, targets)) {
       pr.stand_on_for.push_back(t);
       continue;
@@ -551,6 +576,12 @@ PlanningProblem PlanFollower::buildProblem(double now, const std::vector<Planner
 bool PlanFollower::standsOnFor(const PlannerTarget& t) const {
   // The give-way ship is expected to act while Hu's compliance flag holds.
   return cfg_.stand_on_policy && t.role == OwnRole::StandOn && t.compliant && t.risk != RiskLevel::Urgent;
+}
+
+bool PlanFollower::standingOn(const PlannerTarget& t) const {
+  if (!cfg_.stand_on_policy || !(t.tcpa > 0.0) || !t.compliant || standing_on_.count(t.state.id) == 0)
+    return false;
+  return t.risk == RiskLevel::None || standsOnFor(t);
 }
 
 double PlanFollower::passingCap() const {
@@ -863,6 +894,11 @@ const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<Pl
   for (const auto& t : targets)
     if (dutyWaits(t, targets))
       waiting_duties_.insert(t.state.id);
+  std::set<std::string> standing;
+  for (const auto& t : targets)
+    if (standingOn(t) || (standsOnFor(t) && t.risk != RiskLevel::None && t.tcpa > 0.0))
+      standing.insert(t.state.id);
+  standing_on_ = std::move(standing);
   for (const auto& t : targets) {
     RiskLevel& known = known_levels_[t.state.id];
     if (static_cast<int>(t.risk) > static_cast<int>(known))

@@ -284,10 +284,41 @@ void visitManoeuvres(const PlanningProblem& pr, double base, const NetOptions& o
     visitOffsetPlans(pr, base, visit);
 }
 
+// [s] The step in which the stand-on ship's hold is lengthened (holdUntilClearBack): our choice, half a
+// minute, a fraction of a crossing's passing time.
+constexpr double kHoldStep = 30.0;
+
+// The stand-on ship's hold, from `past` (holdUntilPast) on, lengthened in steps of kHoldStep until her
+// way back to the next point of her way passes each ship of `until_past` at the preferred distance
+// with the margin (kSeparationMargin x kPreferredSeparation x min_separation: the turn back is flown,
+// not drawn), or as wide as holding on would. Turned back sooner (a route bend she held through), she
+// crosses the track of the ship she stood on for and re-creates the risk with her, a close-quarters
+// situation of her own making (Rule 2(a)), and then alters as her stand-on ship (Rule 17(a)). At most
+// the prediction horizon; `past` when no hold within it is clear.
+double holdUntilClearBack(const PlanningProblem& pr, const std::vector<PlannerTarget>& until_past,
+                          double past) {
+  if (until_past.empty() || !(pr.min_separation > 0.0))
+    return past;
+  PlanningProblem watched = pr;
+  watched.targets = until_past;
+  watched.prediction_horizon = 2.0 * pr.prediction_horizon;  // the way back after the longest hold too
+  auto separation = [&](double hold) {
+    return planSeparation(manoeuvrePlan(pr, pr.own.course, {0.0, 1.0}, hold), watched);
+  };
+  const double wanted = std::min(kSeparationMargin * kPreferredSeparation * pr.min_separation,
+                                 separation(watched.prediction_horizon)) -
+                        1.0;
+  for (double hold = past; hold <= pr.prediction_horizon; hold += kHoldStep)
+    if (separation(hold) >= wanted)
+      return hold;
+  return past;
+}
+
 }  // namespace
 
 Plan holdCoursePlan(const PlanningProblem& pr, const std::vector<PlannerTarget>& until_past) {
-  Plan p = manoeuvrePlan(pr, pr.own.course, {0.0, 1.0}, holdUntilPast(pr, pr.own.velocity(), until_past));
+  const double past = holdUntilPast(pr, pr.own.velocity(), until_past);
+  Plan p = manoeuvrePlan(pr, pr.own.course, {0.0, 1.0}, holdUntilClearBack(pr, until_past, past));
   p.message = "hold course and speed";
   return p;
 }

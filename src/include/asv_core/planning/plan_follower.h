@@ -179,6 +179,15 @@ public:
   // ship and the situation is not yet urgent (17(a)(ii), 17(b): then she acts). Such a ship is left out
   // of the problem, and out of the plan's predicted-clearance trigger.
   bool standsOnFor(const PlannerTarget& t) const;
+  // Rule 17(a)(i) until the ship is past: `t` is a ship she stood on for (standsOnFor) in a risk an
+  // earlier plan saw, its CPA still ahead (TCPA > 0), and she still stands on for it (standsOnFor) or
+  // its risk has fallen to none (the give-way ship's action). A risk the give-way ship removed does not
+  // end her duty to keep her course and speed (the referee judges a stand-on alteration up to the
+  // closest approach), and holding on is safe then: on the present motion there is no risk. A stand-on
+  // situation no earlier plan saw does not count (her own turn may have made it; the planner's plan is
+  // judged by closesStandOn). Ends when the CPA is past, the ship is not compliant or urgent, a risk
+  // gives her another role, and with the stand-on policy off.
+  bool standingOn(const PlannerTarget& t) const;
   // Rule 17 with several ships: while she stands on for some ship of `all` (standsOnFor) that is not yet
   // past, her duty to keep out of the way of `t` (not urgent) waits while its CPA is more than
   // duty_window_s away, or comes more than kDutyLead after that ship's: she keeps her course and speed
@@ -284,6 +293,7 @@ private:
   std::optional<ShipState> own_;
   std::map<std::string, RiskLevel> known_levels_;
   std::set<std::string> waiting_duties_;      // ships whose give-way duty waited at the last plan (dutyWaits)
+  std::set<std::string> standing_on_;         // ships she stood on for in a risk, not yet past (standingOn)
   std::map<std::string, double> none_since_;  // when a known target's risk was last seen falling to none
   Plan plan_;
   bool have_plan_ = false;

@@ -59,6 +59,12 @@ struct PlanningProblem {
   // expected to act). Not for the planners: the shared rules refuse a plan that closes them more than
   // holding course would (planUnderSharedRules).
   std::vector<PlannerTarget> stand_on_for;
+  // The ships of stand_on_for she has stood on for since an earlier plan, their CPA still ahead, at
+  // risk still or freed of it by the give-way ship's action (PlanFollower::standingOn). While there is
+  // one, and she keeps out of the way of no ship, the shared rules keep her course and speed
+  // (holdCoursePlan) instead of any plan, a route bend's included, when the hold keeps every other
+  // rule: Rule 17(a)(i) lasts until the ships are past.
+  std::vector<PlannerTarget> standing_on;
   std::vector<StaticObstacle> obstacles;
   bool has_bounds = false;  // environment boundaries (Lazarowska eq. 1-3)
   Eigen::Vector2d bounds_min = Eigen::Vector2d::Zero(), bounds_max = Eigen::Vector2d::Zero();  // [m]

@@ -56,7 +56,8 @@ double planSeparation(const Plan& plan, const PlanningProblem& problem);
 // passes close after it. Without an overtaking, the prediction horizon.
 double passingHorizon(const PlanningProblem& problem);
 
-// Hold course and speed until every ship of `until_past` has passed her CPA (plus a minute), then steer
+// Hold course and speed until every ship of `until_past` has passed her CPA (plus a minute) and the way
+// back to the next point passes each at the preferred distance (or as wide as holding on), then steer
 // for the goal: the stand-on ship's plan (Rule 17(a)(i)).
 Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTarget>& until_past);
 
