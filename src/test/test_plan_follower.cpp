@@ -117,9 +117,11 @@ TEST(PlanFollower, StandingOnDoesNotReplanForTheShipStoodOnFor) {
 // Rule 17(a)(i) lasts until the ship is past. ts1 (from port, compliant) at risk 1 when a plan is made;
 // at the next plan she still stands on for it (PlanningProblem::standing_on), at risk 1 still or after
 // its own action removed the risk (level 0) with its CPA still ahead, until the CPA is past, the ship
-// turns non-compliant, a risk gives her another role, or with the stand-on policy off. A stand-on
-// situation no earlier plan saw (a fresh follower: a risk her own turn may have made) does not count;
-// the planner's plan is judged as before (closesStandOn).
+// turns non-compliant or urgent, a risk gives her another role, or with the stand-on policy off; with
+// no risk, not when its CPA is beyond the prediction horizon (1200 s) or the geometry makes her the
+// ship to keep out of the way. A stand-on situation no earlier plan saw (a fresh follower: a risk her
+// own turn may have made) does not count; the planner's plan is judged as before (closesStandOn). A
+// plan made while the ship is missing from the picture (degraded operation) keeps her place.
 TEST(PlanFollower, SheStandsOnUntilTheShipIsPastThoughItsActionRemovedTheRisk) {
   asv::PlannerTarget seen = standOnTarget(true, asv::RiskLevel::Collision);
   seen.tcpa = 833.3;
@@ -145,6 +147,33 @@ TEST(PlanFollower, SheStandsOnUntilTheShipIsPastThoughItsActionRemovedTheRisk) {
   other_role.encounter = asv::Encounter::CrossingGiveWay;
   other_role.role = asv::OwnRole::GiveWay;
   EXPECT_EQ(standingOn(follower(), other_role), 0u);
+  asv::PlannerTarget urgent = seen;
+  urgent.risk = asv::RiskLevel::Urgent;
+  EXPECT_EQ(standingOn(follower(), urgent), 0u);
+  asv::PlannerTarget far = removed;
+  far.tcpa = 1300.0;
+  EXPECT_EQ(standingOn(follower(), far), 0u);
+  asv::PlannerTarget overtaking = removed;
+  overtaking.encounter = asv::Encounter::Overtaking;
+  overtaking.role = asv::OwnRole::GiveWay;
+  EXPECT_EQ(standingOn(follower(), overtaking), 0u);
+  asv::PlanFollower lost = follower();
+  lost.acceptPlan(straightNorth(), 0.0, {seen}, "test");
+  lost.acceptPlan(straightNorth(), 5.0, {}, "degraded");
+  EXPECT_EQ(lost.buildProblem(10.0, {removed}).standing_on.size(), 1u);
+  // Left out of the plan-clearance trigger as of the problem, whatever the geometry now calls it: the
+  // plan north passes it at 0 m (both reach (0, 5000) at 833 s), and no replan follows.
+  asv::PlannerTarget unnamed = removed;
+  unnamed.encounter = asv::Encounter::None;
+  unnamed.role = asv::OwnRole::None;
+  asv::PlanFollower held = follower();
+  held.acceptPlan(straightNorth(), 0.0, {seen}, "test");
+  std::string why;
+  EXPECT_FALSE(held.replanNeeded(10.0, {unnamed}, why)) << why;
+  asv::PlanFollower unlatched = follower();
+  unlatched.acceptPlan(straightNorth(), 0.0, {}, "test");
+  EXPECT_TRUE(unlatched.replanNeeded(10.0, {unnamed}, why));
+  EXPECT_EQ(why.rfind("plan predicted to pass within", 0), 0u) << why;
   // A plan made meanwhile (the ship past) ends it: a later risk-free picture does not bring it back.
   asv::PlanFollower f = follower();
   f.acceptPlan(straightNorth(), 0.0, {seen}, "test");

@@ -581,7 +581,11 @@ bool PlanFollower::standsOnFor(const PlannerTarget& t) const {
 bool PlanFollower::standingOn(const PlannerTarget& t) const {
   if (!cfg_.stand_on_policy || !(t.tcpa > 0.0) || !t.compliant || standing_on_.count(t.state.id) == 0)
     return false;
-  return t.risk == RiskLevel::None || standsOnFor(t);
+  if (t.risk != RiskLevel::None)
+    return standsOnFor(t);
+  // No risk now: while its CPA is within the prediction horizon and the geometry gives her no duty to
+  // keep out of its way (she may have become the overtaking ship).
+  return t.tcpa <= cfg_.prediction_horizon && !keepsOutOfTheWay(t);
 }
 
 double PlanFollower::passingCap() const {
@@ -802,8 +806,9 @@ bool PlanFollower::replanNeeded(double now, const std::vector<PlannerTarget>& ta
   // draw new searches until one slips through a turn the rules forbid. When that ship does not act, its
   // compliance flag falls or its risk turns urgent, and it counts here again.
   std::vector<PlannerTarget> watched;
-  std::copy_if(targets.begin(), targets.end(), std::back_inserter(watched),
-               [&](const PlannerTarget& t) { return !standsOnFor(t) && !dutyWaits(t, targets); });
+  std::copy_if(targets.begin(), targets.end(), std::back_inserter(watched), [&](const PlannerTarget& t) {
+    return !standingOn(t) && !standsOnFor(t) && !dutyWaits(t, targets);
+  });
   const double clearance = predictedClearance(watched);
   if (clearance < std::max(cfg_.plan_clearance, separationHere())) {
     why = "plan predicted to pass within " + std::to_string(static_cast<int>(clearance)) + " m";
@@ -894,7 +899,13 @@ const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<Pl
   for (const auto& t : targets)
     if (dutyWaits(t, targets))
       waiting_duties_.insert(t.state.id);
+  // A ship missing from this picture (a track lost for a cycle, or no picture at all: degraded
+  // operation) keeps its place: standingOn checks it again when it is back.
   std::set<std::string> standing;
+  for (const auto& id : standing_on_)
+    if (std::none_of(targets.begin(), targets.end(),
+                     [&](const PlannerTarget& t) { return t.state.id == id; }))
+      standing.insert(id);
   for (const auto& t : targets)
     if (standingOn(t) || (standsOnFor(t) && t.risk != RiskLevel::None && t.tcpa > 0.0))
       standing.insert(t.state.id);

@@ -294,7 +294,7 @@ constexpr double kHoldStep = 30.0;
 // not drawn), or as wide as holding on would. Turned back sooner (a route bend she held through), she
 // crosses the track of the ship she stood on for and re-creates the risk with her, a close-quarters
 // situation of her own making (Rule 2(a)), and then alters as her stand-on ship (Rule 17(a)). At most
-// the prediction horizon; `past` when no hold within it is clear.
+// the prediction horizon; when no hold within it is clear, the one that passes widest.
 double holdUntilClearBack(const PlanningProblem& pr, const std::vector<PlannerTarget>& until_past,
                           double past) {
   if (until_past.empty() || !(pr.min_separation > 0.0))
@@ -308,10 +308,17 @@ double holdUntilClearBack(const PlanningProblem& pr, const std::vector<PlannerTa
   const double wanted = std::min(kSeparationMargin * kPreferredSeparation * pr.min_separation,
                                  separation(watched.prediction_horizon)) -
                         1.0;
-  for (double hold = past; hold <= pr.prediction_horizon; hold += kHoldStep)
-    if (separation(hold) >= wanted)
+  double best = past, widest = -1.0;
+  for (double hold = past; hold <= pr.prediction_horizon; hold += kHoldStep) {
+    const double s = separation(hold);
+    if (s >= wanted)
       return hold;
-  return past;
+    if (s > widest) {
+      widest = s;
+      best = hold;
+    }
+  }
+  return best;
 }
 
 }  // namespace

@@ -181,12 +181,14 @@ public:
   bool standsOnFor(const PlannerTarget& t) const;
   // Rule 17(a)(i) until the ship is past: `t` is a ship she stood on for (standsOnFor) in a risk an
   // earlier plan saw, its CPA still ahead (TCPA > 0), and she still stands on for it (standsOnFor) or
-  // its risk has fallen to none (the give-way ship's action). A risk the give-way ship removed does not
-  // end her duty to keep her course and speed (the referee judges a stand-on alteration up to the
-  // closest approach), and holding on is safe then: on the present motion there is no risk. A stand-on
-  // situation no earlier plan saw does not count (her own turn may have made it; the planner's plan is
-  // judged by closesStandOn). Ends when the CPA is past, the ship is not compliant or urgent, a risk
-  // gives her another role, and with the stand-on policy off.
+  // its risk has fallen to none (the give-way ship's action) with the CPA within the prediction horizon
+  // and no duty for her to keep out of its way. A risk the give-way ship removed does not end her duty
+  // to keep her course and speed (the referee judges a stand-on alteration up to the closest approach),
+  // and holding on is safe then: on the present motion there is no risk. A stand-on situation no
+  // earlier plan saw does not count (her own turn may have made it; the planner's plan is judged by
+  // closesStandOn). Ends at a plan that sees the CPA past, the ship not compliant or urgent, or a risk
+  // giving her another role (a ship missing from that plan's picture keeps its place), and with the
+  // stand-on policy off. Such a ship is left out of the plan-clearance trigger too.
   bool standingOn(const PlannerTarget& t) const;
   // Rule 17 with several ships: while she stands on for some ship of `all` (standsOnFor) that is not yet
   // past, her duty to keep out of the way of `t` (not urgent) waits while its CPA is more than

@@ -57,8 +57,9 @@ double planSeparation(const Plan& plan, const PlanningProblem& problem);
 double passingHorizon(const PlanningProblem& problem);
 
 // Hold course and speed until every ship of `until_past` has passed her CPA (plus a minute) and the way
-// back to the next point passes each at the preferred distance (or as wide as holding on), then steer
-// for the goal: the stand-on ship's plan (Rule 17(a)(i)).
+// back to the next point passes them at 1.1 x the preferred distance (kSeparationMargin x
+// kPreferredSeparation x min_separation), or as wide as holding on would (the widest hold found when
+// none does), then steer for the goal: the stand-on ship's plan (Rule 17(a)(i)).
 Plan holdCoursePlan(const PlanningProblem& problem, const std::vector<PlannerTarget>& until_past);
 
 // How the separation net searches (separationManoeuvre). The defaults: every candidate, for the minimum.
