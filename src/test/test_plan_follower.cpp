@@ -161,6 +161,9 @@ TEST(PlanFollower, SheStandsOnUntilTheShipIsPastThoughItsActionRemovedTheRisk) {
   lost.acceptPlan(straightNorth(), 0.0, {seen}, "test");
   lost.acceptPlan(straightNorth(), 5.0, {}, "degraded");
   EXPECT_EQ(lost.buildProblem(10.0, {removed}).standing_on.size(), 1u);
+  // Missing for longer than a prediction horizon (1200 s) since last seen, it is forgotten.
+  lost.acceptPlan(straightNorth(), 1201.0, {}, "degraded");
+  EXPECT_TRUE(lost.buildProblem(1210.0, {removed}).standing_on.empty());
   // Left out of the plan-clearance trigger as of the problem, whatever the geometry now calls it: the
   // plan north passes it at 0 m (both reach (0, 5000) at 833 s), and no replan follows.
   asv::PlannerTarget unnamed = removed;
@@ -1081,7 +1084,9 @@ TEST(PlanUnderSharedRules, TheStandOnRuleYieldsToADutyToKeepOutOfTheWay) {
 }
 
 // While she stands on for a ship in a risk (standing_on) the shared rules keep her course and speed
-// instead of a plan that turns her (a route bend 40 deg to starboard, say), without asking the planner;
+// instead of a plan that turns her (a route bend 40 deg to starboard, say), without asking the planner.
+// ts1 has given way (turned south at (-5000, 5000)): holding north she passes it 5000 m abeam at
+// 5000 / 12 = 417 s, so the risk is none;
 // with a duty to keep out of the way of another ship (ts2 crossing from starboard), or with land within
 // 1 nm (a rock 1500 m to port, clear of the plan), the planner's plan.
 TEST(PlanUnderSharedRules, SheKeepsHerCourseThroughARouteBendWhileSheStandsOn) {
@@ -1090,7 +1095,8 @@ TEST(PlanUnderSharedRules, SheKeepsHerCourseThroughARouteBendWhileSheStandsOn) {
   pr.goal = {12855.8, 15320.9};  // 040 deg, 20 km
   pr.min_separation = 926.0;
   asv::PlannerTarget ts1 = standOnTarget(true, asv::RiskLevel::None);
-  ts1.tcpa = 600.0;
+  ts1.state.course = ts1.state.heading = asv::kPi;
+  ts1.tcpa = 416.7;
   pr.stand_on_for = pr.standing_on = {ts1};
   int asked = 0;
   auto bend = [&](const asv::PlanningProblem& p) {

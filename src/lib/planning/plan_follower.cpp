@@ -194,6 +194,11 @@ bool onlyKeepsOutOfTheWay(const PlanningProblem& pr) {
                      [](const auto& t) { return keepsOutOfTheWay(t) || t.encounter == Encounter::None; });
 }
 
+// Land lies within `range` of the own ship (open water is kOpenWater without it, planning.h).
+bool landWithin(const PlanningProblem& problem, double range) {
+  return trackObstacleDistance({problem.own.position}, problem.obstacles) < range;
+}
+
 // Why a plan breaks a shared rule, or "" when it keeps them all.
 struct RuleCheck {
   const PlanningProblem& problem;
@@ -235,9 +240,16 @@ struct RuleCheck {
     const double planned = planSeparation(p, watched);
     if (keeps_clear)
       return planned < problem.min_separation;
-    return planned < kSeparationMargin * problem.min_separation &&
-           planned < planSeparation(holdCoursePlan(problem, problem.stand_on_for), watched) - 1.0;
+    return planned < kSeparationMargin * problem.min_separation && planned < holdSeparation(watched) - 1.0;
   }
+  // How close holding course and speed passes the ships she stands on for: the same for every plan
+  // judged, so worked out once (a hold is searched over many predicted passes, holdCoursePlan).
+  double holdSeparation(const PlanningProblem& watched) const {
+    if (!hold_separation)
+      hold_separation = planSeparation(holdCoursePlan(problem, problem.stand_on_for), watched);
+    return *hold_separation;
+  }
+  mutable std::optional<double> hold_separation{};
   static constexpr const char* kClosesStandOn = "closed a ship the own ship stands on for, Rule 17(a)(i)";
 
   // The separation net's problem for a manoeuvre that must keep every rule (one to take instead of a
@@ -265,7 +277,7 @@ struct RuleCheck {
 std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem&)>& make,
                                   const PlanningProblem& problem, const RuleCheck& check, double& spent) {
   const double preferred = kPreferredSeparation * problem.min_separation;
-  if (trackObstacleDistance({problem.own.position}, problem.obstacles) < std::max(preferred, kOpenWater))
+  if (landWithin(problem, std::max(preferred, kOpenWater)))
     return std::nullopt;
   PlanningProblem wide = problem;
   wide.min_separation = preferred;
@@ -303,8 +315,7 @@ std::optional<Plan> preferredPlan(const std::function<Plan(const PlanningProblem
 // 9), and a hold that passes the other ships of a crowded port at its small minimum would keep the
 // planner from them.
 std::optional<Plan> standOn(const PlanningProblem& problem, const RuleCheck& check) {
-  if (problem.standing_on.empty() || check.keeps_clear ||
-      trackObstacleDistance({problem.own.position}, problem.obstacles) < kOpenWater)
+  if (problem.standing_on.empty() || check.keeps_clear || landWithin(problem, kOpenWater))
     return std::nullopt;
   Plan hold = holdCoursePlan(problem, problem.standing_on);
   if (!check.broken(hold).empty())
@@ -900,15 +911,17 @@ const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<Pl
     if (dutyWaits(t, targets))
       waiting_duties_.insert(t.state.id);
   // A ship missing from this picture (a track lost for a cycle, or no picture at all: degraded
-  // operation) keeps its place: standingOn checks it again when it is back.
-  std::set<std::string> standing;
-  for (const auto& id : standing_on_)
-    if (std::none_of(targets.begin(), targets.end(),
+  // operation) keeps its place for a prediction horizon (its CPA was within one): standingOn checks it
+  // again when it is back. A ship seen at risk starts it (standingOn then asks standsOnFor).
+  std::map<std::string, double> standing;
+  for (const auto& [id, seen] : standing_on_)
+    if (now - seen <= cfg_.prediction_horizon &&
+        std::none_of(targets.begin(), targets.end(),
                      [&](const PlannerTarget& t) { return t.state.id == id; }))
-      standing.insert(id);
+      standing.emplace(id, seen);
   for (const auto& t : targets)
-    if (standingOn(t) || (standsOnFor(t) && t.risk != RiskLevel::None && t.tcpa > 0.0))
-      standing.insert(t.state.id);
+    if (t.risk == RiskLevel::None ? standingOn(t) : t.tcpa > 0.0 && standsOnFor(t))
+      standing.emplace(t.state.id, now);
   standing_on_ = std::move(standing);
   for (const auto& t : targets) {
     RiskLevel& known = known_levels_[t.state.id];

@@ -187,8 +187,9 @@ public:
   // and holding on is safe then: on the present motion there is no risk. A stand-on situation no
   // earlier plan saw does not count (her own turn may have made it; the planner's plan is judged by
   // closesStandOn). Ends at a plan that sees the CPA past, the ship not compliant or urgent, or a risk
-  // giving her another role (a ship missing from that plan's picture keeps its place), and with the
-  // stand-on policy off. Such a ship is left out of the plan-clearance trigger too.
+  // giving her another role (a ship missing from that plan's picture keeps its place for a prediction
+  // horizon), and with the stand-on policy off. Such a ship is left out of the plan-clearance trigger
+  // too.
   bool standingOn(const PlannerTarget& t) const;
   // Rule 17 with several ships: while she stands on for some ship of `all` (standsOnFor) that is not yet
   // past, her duty to keep out of the way of `t` (not urgent) waits while its CPA is more than
@@ -294,9 +295,9 @@ private:
   std::vector<StaticObstacle> obstacles_;
   std::optional<ShipState> own_;
   std::map<std::string, RiskLevel> known_levels_;
-  std::set<std::string> waiting_duties_;      // ships whose give-way duty waited at the last plan (dutyWaits)
-  std::set<std::string> standing_on_;         // ships she stood on for in a risk, not yet past (standingOn)
-  std::map<std::string, double> none_since_;  // when a known target's risk was last seen falling to none
+  std::set<std::string> waiting_duties_;  // ships whose give-way duty waited at the last plan (dutyWaits)
+  std::map<std::string, double> standing_on_;  // ships she stands on for until past (standingOn): last seen
+  std::map<std::string, double> none_since_;   // when a known target's risk was last seen falling to none
   Plan plan_;
   bool have_plan_ = false;
   size_t wp_index_ = 1;
