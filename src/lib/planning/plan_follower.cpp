@@ -914,11 +914,13 @@ const Plan& PlanFollower::acceptPlan(Plan plan, double now, const std::vector<Pl
   // operation) keeps its place for a prediction horizon (its CPA was within one): standingOn checks it
   // again when it is back. A ship seen at risk starts it (standingOn then asks standsOnFor).
   std::map<std::string, double> standing;
-  for (const auto& [id, seen] : standing_on_)
-    if (now - seen <= cfg_.prediction_horizon &&
+  for (const auto& entry : standing_on_) {
+    const std::string& id = entry.first;
+    if (now - entry.second <= cfg_.prediction_horizon &&
         std::none_of(targets.begin(), targets.end(),
-                     [&](const PlannerTarget& t) { return t.state.id == id; }))
-      standing.emplace(id, seen);
+                     [&id](const PlannerTarget& t) { return t.state.id == id; }))
+      standing.insert(entry);
+  }
   for (const auto& t : targets)
     if (t.risk == RiskLevel::None ? standingOn(t) : t.tcpa > 0.0 && standsOnFor(t))
       standing.emplace(t.state.id, now);
